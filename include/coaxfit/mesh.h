@@ -1,0 +1,84 @@
+#ifndef coaxfit_mesh_h
+#define coaxfit_mesh_h
+
+#include <deal.II/grid/tria.h>
+
+#include <vector>
+
+namespace coaxfit
+{
+  using namespace dealii;
+
+  /** Boundary ids of a body's (r, z) half section. */
+  namespace BoundaryId
+  {
+    constexpr types::boundary_id axis     = 0; ///< r = 0: u_r = 0
+    constexpr types::boundary_id symmetry = 1; ///< z = 0: u_z = 0
+    constexpr types::boundary_id contact  = 2; ///< S: coupling data
+    constexpr types::boundary_id free     = 3; ///< traction free
+  } // namespace BoundaryId
+
+  /**
+   * The (r, z) half section of one cylinder, z >= 0, and how to mesh it.
+   *
+   * The contact surface S is the part 0 <= z <= contact_length of the
+   * cylindrical surface r = contact_radius, which is either the inner or the
+   * outer radius. Two bodies that share S and the mesh settings get
+   * coinciding vertices and FE support points on S.
+   */
+  struct BodyGeometry
+  {
+    double r_inner        = 0.;  ///< mm; 0 gives a solid cylinder with an axis
+    double r_outer        = 1.;  ///< mm
+    double length         = 1.;  ///< half length (mm)
+    double contact_length = 1.;  ///< 0 < contact_length <= length (mm)
+    bool   contact_at_outer_radius = true;
+
+    unsigned int axial_cells        = 12;  ///< over the contact length
+    unsigned int radial_cells       = 10;  ///< across the wall
+    double       grading_ratio      = 1.4; ///< neighbouring cell size ratio
+    unsigned int global_refinements = 0;
+
+    /** Radius of the contact surface. */
+    double
+    contact_radius() const
+    {
+      return contact_at_outer_radius ? r_outer : r_inner;
+    }
+
+    /** Radial component of the body's outward normal on S (+1 or -1). */
+    double
+    contact_normal() const
+    {
+      return contact_at_outer_radius ? 1. : -1.;
+    }
+  };
+
+  /**
+   * Cell sizes of a geometric progression with @p n cells over @p length,
+   * neighbouring sizes differing by the factor @p ratio, the smallest cell at
+   * the end (fine_at_end) or at the start.
+   */
+  std::vector<double>
+  graded_spacing(double       length,
+                 unsigned int n,
+                 double       ratio,
+                 bool         fine_at_end);
+
+  /**
+   * Cells that continue a progression beyond a point where the neighbouring
+   * cell has size @p first_size: sizes grow by @p ratio away from it and are
+   * scaled to fill @p length exactly.
+   */
+  std::vector<double>
+  growing_spacing(double length, double first_size, double ratio);
+
+  /**
+   * Build the graded rectangular mesh of one body and set the boundary ids
+   * of BoundaryId on it, then refine globally.
+   */
+  void
+  make_body_mesh(Triangulation<2> &triangulation, const BodyGeometry &geometry);
+} // namespace coaxfit
+
+#endif

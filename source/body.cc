@@ -1,0 +1,328 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <coaxfit/axisymmetric.h>
+#include <coaxfit/body.h>
+#include <coaxfit/stress_postprocessor.h>
+
+#include <algorithm>
+#include <fstream>
+
+namespace coaxfit
+{
+  Body::Body(const std::string  &name,
+             const BodyGeometry &geometry,
+             const Material     &material,
+             const unsigned int  degree)
+    : body_name(name)
+    , body_geometry(geometry)
+    , body_material(material)
+    , fe(FE_Q<2>(degree), 2)
+    , dof_handler(triangulation)
+  {}
+
+
+
+  void
+  Body::setup_system()
+  {
+    make_body_mesh(triangulation, body_geometry);
+    dof_handler.distribute_dofs(fe);
+
+    constraints.clear();
+    const FEValuesExtractors::Scalar u_r(0), u_z(1);
+    if (body_geometry.r_inner == 0.)
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               BoundaryId::axis,
+                                               Functions::ZeroFunction<2>(2),
+                                               constraints,
+                                               fe.component_mask(u_r));
+    VectorTools::interpolate_boundary_values(dof_handler,
+                                             BoundaryId::symmetry,
+                                             Functions::ZeroFunction<2>(2),
+                                             constraints,
+                                             fe.component_mask(u_z));
+    constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    sparsity_pattern.copy_from(dsp);
+    stiffness_matrix.reinit(sparsity_pattern);
+    solution.reinit(dof_handler.n_dofs());
+
+    // The interface points: support points of u_r on S, ordered by z.
+    const IndexSet on_contact =
+      DoFTools::extract_boundary_dofs(dof_handler,
+                                      fe.component_mask(u_r),
+                                      {BoundaryId::contact});
+    std::map<types::global_dof_index, Point<2>> support_points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
+                                         dof_handler,
+                                         support_points);
+    std::vector<std::pair<double, types::global_dof_index>> by_z;
+    for (const auto dof : on_contact)
+      by_z.emplace_back(support_points[dof][1], dof);
+    std::sort(by_z.begin(), by_z.end());
+    interface_dofs.clear();
+    interface_z_coordinates.clear();
+    for (const auto &[z, dof] : by_z)
+      {
+        interface_z_coordinates.push_back(z);
+        interface_dofs.push_back(dof);
+      }
+
+    factorizations.clear();
+    factorization_order.clear();
+  }
+
+
+
+  void
+  Body::assemble_system()
+  {
+    const QGauss<2>     quadrature(fe.degree + 1);
+    const QGauss<1>     face_quadrature(fe.degree + 1);
+    FEValues<2>         fe_values(fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    FEFaceValues<2>     fe_face_values(fe,
+                                   face_quadrature,
+                                   update_values | update_quadrature_points |
+                                     update_JxW_values);
+    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>  cell_matrix(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
+    std::vector<Axisymmetric::Vector4>   B(dofs_per_cell);
+
+    std::map<types::global_dof_index, unsigned int> interface_index;
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      interface_index[interface_dofs[i]] = i;
+
+    stiffness_matrix = 0;
+    interface_mass_entries.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_matrix = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double r = fe_values.quadrature_point(q)[0];
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const unsigned int comp = fe.system_to_component_index(i).first;
+                const double       N    = fe_values.shape_value(i, q);
+                const Tensor<1, 2> grad = fe_values.shape_grad(i, q);
+                const Tensor<1, 2> zero;
+                B[i] = (comp == 0) ? Axisymmetric::strain(N, grad, zero, r) :
+                                     Axisymmetric::strain(0., zero, grad, r);
+              }
+            const double weight = r * fe_values.JxW(q);
+            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              {
+                const Axisymmetric::Vector4 sigma_j =
+                  Axisymmetric::stress(body_material, B[j]);
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  cell_matrix(i, j) +=
+                    (B[i][0] * sigma_j[0] + B[i][1] * sigma_j[1] +
+                     B[i][2] * sigma_j[2] + B[i][3] * sigma_j[3]) *
+                    weight;
+              }
+          }
+        cell->get_dof_indices(local_dof_indices);
+        constraints.distribute_local_to_global(cell_matrix,
+                                               local_dof_indices,
+                                               stiffness_matrix);
+
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              face->boundary_id() == BoundaryId::contact)
+            {
+              fe_face_values.reinit(cell, face);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                {
+                  const double r = fe_face_values.quadrature_point(q)[0];
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                      {
+                        const auto a = interface_index.find(local_dof_indices[i]);
+                        const auto b = interface_index.find(local_dof_indices[j]);
+                        if (a == interface_index.end() ||
+                            b == interface_index.end())
+                          continue;
+                        interface_mass_entries[{a->second, b->second}] +=
+                          fe_face_values.shape_value(i, q) *
+                          fe_face_values.shape_value(j, q) * r *
+                          fe_face_values.JxW(q);
+                      }
+                }
+            }
+      }
+  }
+
+
+
+  const SparseDirectUMFPACK &
+  Body::factorization(const std::vector<bool> &prescribed)
+  {
+    const auto found = factorizations.find(prescribed);
+    if (found != factorizations.end())
+      return *found->second;
+
+    Timer timer;
+    // K with the rows and columns of the prescribed points eliminated
+    // symmetrically; the diagonal entries stay.
+    SparseMatrix<double> matrix(sparsity_pattern);
+    matrix.copy_from(stiffness_matrix);
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      if (prescribed[i])
+        {
+          const auto row = interface_dofs[i];
+          for (auto entry = matrix.begin(row); entry != matrix.end(row);
+               ++entry)
+            if (entry->column() != row)
+              {
+                matrix.set(entry->column(), row, 0.);
+                entry->value() = 0.;
+              }
+        }
+
+    auto solver = std::make_unique<SparseDirectUMFPACK>();
+    solver->initialize(matrix);
+    ++factorization_count;
+    factorization_seconds += timer.wall_time();
+
+    if (factorization_order.size() >= max_cached_factorizations)
+      {
+        factorizations.erase(factorization_order.front());
+        factorization_order.pop_front();
+      }
+    factorization_order.push_back(prescribed);
+    return *(factorizations[prescribed] = std::move(solver));
+  }
+
+
+
+  void
+  Body::solve(const std::vector<bool>   &prescribed,
+              const std::vector<double> &displacement,
+              const std::vector<double> &force,
+              std::vector<double>       &u_r,
+              std::vector<double>       &force_out)
+  {
+    const unsigned int n      = interface_dofs.size();
+    const double       normal = body_geometry.contact_normal();
+    AssertDimension(prescribed.size(), n);
+
+    Vector<double> rhs(dof_handler.n_dofs());
+    Vector<double> lift(dof_handler.n_dofs());
+    bool           any_prescribed = false;
+    for (unsigned int i = 0; i < n; ++i)
+      if (prescribed[i])
+        {
+          lift[interface_dofs[i]] = displacement[i];
+          any_prescribed          = true;
+        }
+      else
+        rhs[interface_dofs[i]] = -normal * force[i];
+
+    if (any_prescribed)
+      {
+        Vector<double> K_lift(dof_handler.n_dofs());
+        stiffness_matrix.vmult(K_lift, lift);
+        rhs -= K_lift;
+        for (unsigned int i = 0; i < n; ++i)
+          if (prescribed[i])
+            rhs[interface_dofs[i]] =
+              stiffness_matrix.diag_element(interface_dofs[i]) *
+              displacement[i];
+      }
+
+    factorization(prescribed).solve(rhs);
+    ++solve_count;
+    solution = rhs;
+    constraints.distribute(solution);
+
+    u_r.resize(n);
+    force_out.resize(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto dof = interface_dofs[i];
+        u_r[i]         = solution[dof];
+        if (prescribed[i])
+          {
+            // Reaction: the row of K u - f (f = 0 at a prescribed point).
+            double reaction = 0.;
+            for (auto entry = stiffness_matrix.begin(dof);
+                 entry != stiffness_matrix.end(dof);
+                 ++entry)
+              reaction += entry->value() * solution[entry->column()];
+            force_out[i] = -normal * reaction;
+          }
+        else
+          force_out[i] = force[i];
+      }
+  }
+
+
+
+  void
+  Body::solve_neumann(const std::vector<double> &force, std::vector<double> &u_r)
+  {
+    std::vector<double> force_out;
+    solve(std::vector<bool>(n_interface_points(), false),
+          std::vector<double>(n_interface_points(), 0.),
+          force,
+          u_r,
+          force_out);
+  }
+
+
+
+  void
+  Body::solve_dirichlet(const std::vector<double> &u_r,
+                        std::vector<double>       &force)
+  {
+    std::vector<double> u_r_out;
+    solve(std::vector<bool>(n_interface_points(), true),
+          u_r,
+          std::vector<double>(n_interface_points(), 0.),
+          u_r_out,
+          force);
+  }
+
+
+
+  void
+  Body::output_results(const std::string &filename) const
+  {
+    const StressPostprocessor postprocessor(body_material);
+    DataOut<2>                data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(2,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(solution,
+                             std::vector<std::string>(2, "displacement"),
+                             DataOut<2>::type_dof_data,
+                             interpretation);
+    data_out.add_data_vector(solution, postprocessor);
+    data_out.build_patches(fe.degree);
+
+    std::ofstream out(filename);
+    if (!out)
+      throw std::runtime_error("cannot write '" + filename + "'");
+    data_out.write_vtu(out);
+  }
+} // namespace coaxfit

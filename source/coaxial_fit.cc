@@ -1,0 +1,188 @@
+#include <deal.II/base/timer.h>
+
+#include <coaxfit/alpha_controller.h>
+#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/contact_interface.h>
+#include <coaxfit/input_error.h>
+#include <coaxfit/results.h>
+#include <coaxfit/staggered_coupling.h>
+
+#include <deal.II/base/data_out_base.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    BodyGeometry
+    common_mesh_settings(const Parameters &parameters)
+    {
+      BodyGeometry g;
+      g.contact_length     = parameters.contact_length();
+      g.axial_cells        = parameters.axial_cells;
+      g.radial_cells       = parameters.radial_cells;
+      g.grading_ratio      = parameters.grading_ratio;
+      g.global_refinements = parameters.global_refinements;
+      return g;
+    }
+
+    void
+    make_output_directory(const std::string &directory)
+    {
+      std::error_code error;
+      std::filesystem::create_directories(directory, error);
+      if (error || !std::filesystem::is_directory(directory))
+        throw InputError("parameter Output/Directory = " + directory +
+                         ": cannot create the directory (" +
+                         error.message() + ")");
+    }
+  } // namespace
+
+
+
+  BodyGeometry
+  CoaxialFit::shaft_geometry(const Parameters &parameters)
+  {
+    BodyGeometry g            = common_mesh_settings(parameters);
+    g.r_inner                 = parameters.R0;
+    g.r_outer                 = parameters.R1;
+    g.length                  = parameters.L1;
+    g.contact_at_outer_radius = true;
+    return g;
+  }
+
+
+
+  BodyGeometry
+  CoaxialFit::hub_geometry(const Parameters &parameters)
+  {
+    BodyGeometry g            = common_mesh_settings(parameters);
+    g.r_inner                 = parameters.R1;
+    g.r_outer                 = parameters.R2;
+    g.length                  = parameters.L2;
+    g.contact_at_outer_radius = false;
+    return g;
+  }
+
+
+
+  CoaxialFit::CoaxialFit(const Parameters &parameters)
+    : parameters(parameters)
+    , shaft("shaft", shaft_geometry(parameters), parameters.shaft, parameters.degree)
+    , hub("hub", hub_geometry(parameters), parameters.hub, parameters.degree)
+  {}
+
+
+
+  bool
+  CoaxialFit::run(std::ostream &out)
+  {
+    Timer  total_timer;
+    Timing timing;
+    make_output_directory(parameters.output_directory);
+
+    Timer timer;
+    shaft.setup_system();
+    hub.setup_system();
+    shaft.assemble_system();
+    hub.assemble_system();
+    const ContactInterface interface(shaft, hub, parameters.d);
+    timing.setup = timer.wall_time();
+
+    out << "coaxfit: case " << parameters.case_name << '\n'
+        << "  shaft: " << shaft.n_cells() << " cells, " << shaft.n_dofs()
+        << " DoFs;  hub: " << hub.n_cells() << " cells, " << hub.n_dofs()
+        << " DoFs;  " << interface.n_points() << " interface points, FE_Q("
+        << parameters.degree << ")\n";
+
+    // Both constraint sets of the bilateral process, factorized up front
+    // and concurrently.
+    timer.restart();
+    {
+      const std::vector<bool> none(interface.n_points(), false);
+      const std::vector<bool> all(interface.n_points(), true);
+      Threads::Task<void>     task =
+        Threads::new_task([&]() { shaft.factorize(none), shaft.factorize(all); });
+      hub.factorize(none);
+      hub.factorize(all);
+      task.join();
+    }
+    timing.factorization = timer.wall_time();
+
+    timer.restart();
+    const std::unique_ptr<AlphaController> controller =
+      make_alpha_controller(parameters);
+    StaggeredCoupling coupling(
+      shaft, hub, interface, *controller, parameters.tolerance, parameters.max_steps);
+    const bool converged = coupling.run(&out);
+    timing.coupling      = timer.wall_time();
+
+    timer.restart();
+    const PressureSummary    pressure(parameters, interface, coupling.contact_force());
+    std::vector<std::string> warnings;
+    std::ostringstream       report;
+    report << std::fixed << std::setprecision(4);
+    if (converged)
+      report << "  converged in " << coupling.n_steps() << " steps ("
+             << coupling.steps_to_displacement_mismatch(1e-2)
+             << " to the paper's criterion max|du|/d < 1e-2)\n";
+    else
+      {
+        std::ostringstream w;
+        w << "not converged within Coupling/Max steps = " << parameters.max_steps
+          << " (|du|/d = " << std::scientific << std::setprecision(3)
+          << coupling.displacement_residual()
+          << ", |dp|/p = " << coupling.traction_residual() << ")";
+        warnings.push_back(w.str());
+      }
+    if (pressure.min < 0.)
+      {
+        std::ostringstream w;
+        w << std::setprecision(4) << "the bilateral contact pressure is tensile "
+          << "(min " << pressure.min << " MPa at z = " << pressure.z_of_min
+          << " mm): the surfaces want to separate there, which this "
+          << "bilateral solution does not allow";
+        warnings.push_back(w.str());
+      }
+    report << "  pressure at z = 0: " << pressure.at_mid_plane
+           << " MPa, mean: " << pressure.mean << " MPa, Lame: " << pressure.lame
+           << " MPa\n"
+           << "  pressure min: " << pressure.min << " MPa at z = "
+           << pressure.z_of_min << " mm, max: " << pressure.max
+           << " MPa at z = " << pressure.z_of_max << " mm (corner value is "
+           << "singular)\n";
+    for (const std::string &w : warnings)
+      report << "  warning: " << w << '\n';
+    out << report.str();
+
+    const std::string dir = parameters.output_directory + "/";
+    write_contact_pressure(dir + "contact_pressure.csv", interface, pressure, coupling);
+    write_convergence(dir + "convergence.csv", coupling);
+    if (parameters.write_vtu)
+      {
+        shaft.output_results(dir + "shaft.vtu");
+        hub.output_results(dir + "hub.vtu");
+        std::vector<std::pair<double, std::string>> records = {
+          {0., "shaft.vtu"}, {0., "hub.vtu"}};
+        std::ofstream pvd(dir + "solution.pvd");
+        DataOutBase::write_pvd_record(pvd, records);
+      }
+    timing.output = timer.wall_time();
+    timing.total  = total_timer.wall_time();
+    write_summary(dir + "summary.json",
+                  {parameters, shaft, hub, interface, coupling, pressure,
+                   timing, controller->name(), warnings});
+
+    out << "  results in " << parameters.output_directory << '\n';
+    if (parameters.print_timing)
+      out << std::fixed << std::setprecision(3) << "  wall time: setup "
+          << timing.setup << " s, factorization " << timing.factorization
+          << " s, coupling " << timing.coupling << " s, output "
+          << timing.output << " s, total " << timing.total << " s\n";
+    return converged;
+  }
+} // namespace coaxfit

@@ -1,0 +1,46 @@
+#include <coaxfit/axisymmetric.h>
+#include <coaxfit/stress_postprocessor.h>
+
+namespace coaxfit
+{
+  StressPostprocessor::StressPostprocessor(const Material &material)
+    : material(material)
+  {}
+
+
+
+  void
+  StressPostprocessor::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<2> &inputs,
+    std::vector<Vector<double>>              &computed_quantities) const
+  {
+    for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+      {
+        const Axisymmetric::Vector4 sigma = Axisymmetric::stress(
+          material,
+          Axisymmetric::strain(inputs.solution_values[q][0],
+                               inputs.solution_gradients[q][0],
+                               inputs.solution_gradients[q][1],
+                               inputs.evaluation_points[q][0]));
+        for (unsigned int c = 0; c < 4; ++c)
+          computed_quantities[q][c] = sigma[c];
+        computed_quantities[q][4] = Axisymmetric::von_mises(sigma);
+      }
+  }
+
+
+
+  std::vector<std::string>
+  StressPostprocessor::get_names() const
+  {
+    return {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz", "von_Mises"};
+  }
+
+
+
+  UpdateFlags
+  StressPostprocessor::get_needed_update_flags() const
+  {
+    return update_values | update_gradients | update_quadrature_points;
+  }
+} // namespace coaxfit

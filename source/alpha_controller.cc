@@ -44,8 +44,8 @@ namespace coaxfit
   {
     if (parameters.alpha_controller == "fixed")
       return std::make_unique<FixedAlphaController>(parameters.alpha);
-    throw InputError("parameter Coupling/Alpha controller = " +
-                     parameters.alpha_controller +
-                     " is not known: allowed is fixed.");
+    throw InputError("parameter Coupling/Alpha controller = "
+                     + parameters.alpha_controller
+                     + " is not known: allowed is fixed.");
   }
 } // namespace coaxfit

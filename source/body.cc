@@ -1,21 +1,15 @@
-#include <deal.II/base/quadrature_lib.h>
-
-#include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
-
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-
-#include <deal.II/numerics/data_out.h>
-#include <deal.II/numerics/vector_tools.h>
-
+#include <algorithm>
 #include <coaxfit/axisymmetric.h>
 #include <coaxfit/body.h>
 #include <coaxfit/stress_postprocessor.h>
-
-#include <algorithm>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
 #include <fstream>
 
 namespace coaxfit
@@ -61,10 +55,10 @@ namespace coaxfit
     solution.reinit(dof_handler.n_dofs());
 
     // The interface points: support points of u_r on S, ordered by z.
-    const IndexSet on_contact =
-      DoFTools::extract_boundary_dofs(dof_handler,
-                                      fe.component_mask(u_r),
-                                      {BoundaryId::contact});
+    const IndexSet on_contact
+      = DoFTools::extract_boundary_dofs(dof_handler,
+                                        fe.component_mask(u_r),
+                                        {BoundaryId::contact});
     std::map<types::global_dof_index, Point<2>> support_points;
     DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
                                          dof_handler,
@@ -90,18 +84,18 @@ namespace coaxfit
   void
   Body::assemble_system()
   {
-    const QGauss<2>     quadrature(fe.degree + 1);
-    const QGauss<1>     face_quadrature(fe.degree + 1);
-    FEValues<2>         fe_values(fe,
+    const QGauss<2>    quadrature(fe.degree + 1);
+    const QGauss<1>    face_quadrature(fe.degree + 1);
+    FEValues<2>        fe_values(fe,
                           quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
-    FEFaceValues<2>     fe_face_values(fe,
+                          update_values | update_gradients
+                            | update_quadrature_points | update_JxW_values);
+    FEFaceValues<2>    fe_face_values(fe,
                                    face_quadrature,
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
-    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>  cell_matrix(dofs_per_cell, dofs_per_cell);
+                                   update_values | update_quadrature_points
+                                     | update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
     std::vector<Axisymmetric::Vector4>   B(dofs_per_cell);
 
@@ -130,13 +124,13 @@ namespace coaxfit
             const double weight = r * fe_values.JxW(q);
             for (unsigned int j = 0; j < dofs_per_cell; ++j)
               {
-                const Axisymmetric::Vector4 sigma_j =
-                  Axisymmetric::stress(body_material, B[j]);
+                const Axisymmetric::Vector4 sigma_j
+                  = Axisymmetric::stress(body_material, B[j]);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  cell_matrix(i, j) +=
-                    (B[i][0] * sigma_j[0] + B[i][1] * sigma_j[1] +
-                     B[i][2] * sigma_j[2] + B[i][3] * sigma_j[3]) *
-                    weight;
+                  cell_matrix(i, j)
+                    += (B[i][0] * sigma_j[0] + B[i][1] * sigma_j[1]
+                        + B[i][2] * sigma_j[2] + B[i][3] * sigma_j[3])
+                       * weight;
               }
           }
         cell->get_dof_indices(local_dof_indices);
@@ -145,8 +139,7 @@ namespace coaxfit
                                                stiffness_matrix);
 
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              face->boundary_id() == BoundaryId::contact)
+          if (face->at_boundary() && face->boundary_id() == BoundaryId::contact)
             {
               fe_face_values.reinit(cell, face);
               for (const unsigned int q :
@@ -156,15 +149,17 @@ namespace coaxfit
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
                     for (unsigned int j = 0; j < dofs_per_cell; ++j)
                       {
-                        const auto a = interface_index.find(local_dof_indices[i]);
-                        const auto b = interface_index.find(local_dof_indices[j]);
-                        if (a == interface_index.end() ||
-                            b == interface_index.end())
+                        const auto a
+                          = interface_index.find(local_dof_indices[i]);
+                        const auto b
+                          = interface_index.find(local_dof_indices[j]);
+                        if (a == interface_index.end()
+                            || b == interface_index.end())
                           continue;
-                        interface_mass_entries[{a->second, b->second}] +=
-                          fe_face_values.shape_value(i, q) *
-                          fe_face_values.shape_value(j, q) * r *
-                          fe_face_values.JxW(q);
+                        interface_mass_entries[{a->second, b->second}]
+                          += fe_face_values.shape_value(i, q)
+                             * fe_face_values.shape_value(j, q) * r
+                             * fe_face_values.JxW(q);
                       }
                 }
             }
@@ -244,9 +239,9 @@ namespace coaxfit
         rhs -= K_lift;
         for (unsigned int i = 0; i < n; ++i)
           if (prescribed[i])
-            rhs[interface_dofs[i]] =
-              stiffness_matrix.diag_element(interface_dofs[i]) *
-              displacement[i];
+            rhs[interface_dofs[i]]
+              = stiffness_matrix.diag_element(interface_dofs[i])
+                * displacement[i];
       }
 
     factorization(prescribed).solve(rhs);
@@ -278,7 +273,8 @@ namespace coaxfit
 
 
   void
-  Body::solve_neumann(const std::vector<double> &force, std::vector<double> &u_r)
+  Body::solve_neumann(const std::vector<double> &force,
+                      std::vector<double>       &u_r)
   {
     std::vector<double> force_out;
     solve(std::vector<bool>(n_interface_points(), false),

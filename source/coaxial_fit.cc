@@ -1,14 +1,11 @@
-#include <deal.II/base/timer.h>
-
 #include <coaxfit/alpha_controller.h>
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/results.h>
 #include <coaxfit/staggered_coupling.h>
-
 #include <deal.II/base/data_out_base.h>
-
+#include <deal.II/base/timer.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -36,9 +33,9 @@ namespace coaxfit
       std::error_code error;
       std::filesystem::create_directories(directory, error);
       if (error || !std::filesystem::is_directory(directory))
-        throw InputError("parameter Output/Directory = " + directory +
-                         ": cannot create the directory (" +
-                         error.message() + ")");
+        throw InputError("parameter Output/Directory = " + directory
+                         + ": cannot create the directory (" + error.message()
+                         + ")");
     }
   } // namespace
 
@@ -72,7 +69,10 @@ namespace coaxfit
 
   CoaxialFit::CoaxialFit(const Parameters &parameters)
     : parameters(parameters)
-    , shaft("shaft", shaft_geometry(parameters), parameters.shaft, parameters.degree)
+    , shaft("shaft",
+            shaft_geometry(parameters),
+            parameters.shaft,
+            parameters.degree)
     , hub("hub", hub_geometry(parameters), parameters.hub, parameters.degree)
   {}
 
@@ -105,8 +105,8 @@ namespace coaxfit
     {
       const std::vector<bool> none(interface.n_points(), false);
       const std::vector<bool> all(interface.n_points(), true);
-      Threads::Task<void>     task =
-        Threads::new_task([&]() { shaft.factorize(none), shaft.factorize(all); });
+      Threads::Task<void>     task = Threads::new_task(
+        [&]() { shaft.factorize(none), shaft.factorize(all); });
       hub.factorize(none);
       hub.factorize(all);
       task.join();
@@ -114,15 +114,21 @@ namespace coaxfit
     timing.factorization = timer.wall_time();
 
     timer.restart();
-    const std::unique_ptr<AlphaController> controller =
-      make_alpha_controller(parameters);
-    StaggeredCoupling coupling(
-      shaft, hub, interface, *controller, parameters.tolerance, parameters.max_steps);
-    const bool converged = coupling.run(&out);
-    timing.coupling      = timer.wall_time();
+    const std::unique_ptr<AlphaController> controller
+      = make_alpha_controller(parameters);
+    StaggeredCoupling coupling(shaft,
+                               hub,
+                               interface,
+                               *controller,
+                               parameters.tolerance,
+                               parameters.max_steps);
+    const bool        converged = coupling.run(&out);
+    timing.coupling             = timer.wall_time();
 
     timer.restart();
-    const PressureSummary    pressure(parameters, interface, coupling.contact_force());
+    const PressureSummary    pressure(parameters,
+                                   interface,
+                                   coupling.contact_force());
     std::vector<std::string> warnings;
     std::ostringstream       report;
     report << std::fixed << std::setprecision(4);
@@ -133,16 +139,17 @@ namespace coaxfit
     else
       {
         std::ostringstream w;
-        w << "not converged within Coupling/Max steps = " << parameters.max_steps
-          << " (|du|/d = " << std::scientific << std::setprecision(3)
-          << coupling.displacement_residual()
+        w << "not converged within Coupling/Max steps = "
+          << parameters.max_steps << " (|du|/d = " << std::scientific
+          << std::setprecision(3) << coupling.displacement_residual()
           << ", |dp|/p = " << coupling.traction_residual() << ")";
         warnings.push_back(w.str());
       }
     if (pressure.min < 0.)
       {
         std::ostringstream w;
-        w << std::setprecision(4) << "the bilateral contact pressure is tensile "
+        w << std::setprecision(4)
+          << "the bilateral contact pressure is tensile "
           << "(min " << pressure.min << " MPa at z = " << pressure.z_of_min
           << " mm): the surfaces want to separate there, which this "
           << "bilateral solution does not allow";
@@ -151,8 +158,9 @@ namespace coaxfit
     report << "  pressure at z = 0: " << pressure.at_mid_plane
            << " MPa, mean: " << pressure.mean << " MPa, Lame: " << pressure.lame
            << " MPa\n"
-           << "  pressure min: " << pressure.min << " MPa at z = "
-           << pressure.z_of_min << " mm, max: " << pressure.max
+           << "  pressure min: " << pressure.min
+           << " MPa at z = " << pressure.z_of_min
+           << " mm, max: " << pressure.max
            << " MPa at z = " << pressure.z_of_max << " mm (corner value is "
            << "singular)\n";
     for (const std::string &w : warnings)
@@ -160,22 +168,32 @@ namespace coaxfit
     out << report.str();
 
     const std::string dir = parameters.output_directory + "/";
-    write_contact_pressure(dir + "contact_pressure.csv", interface, pressure, coupling);
+    write_contact_pressure(dir + "contact_pressure.csv",
+                           interface,
+                           pressure,
+                           coupling);
     write_convergence(dir + "convergence.csv", coupling);
     if (parameters.write_vtu)
       {
         shaft.output_results(dir + "shaft.vtu");
         hub.output_results(dir + "hub.vtu");
-        std::vector<std::pair<double, std::string>> records = {
-          {0., "shaft.vtu"}, {0., "hub.vtu"}};
+        std::vector<std::pair<double, std::string>> records
+          = {{0., "shaft.vtu"}, {0., "hub.vtu"}};
         std::ofstream pvd(dir + "solution.pvd");
         DataOutBase::write_pvd_record(pvd, records);
       }
     timing.output = timer.wall_time();
     timing.total  = total_timer.wall_time();
     write_summary(dir + "summary.json",
-                  {parameters, shaft, hub, interface, coupling, pressure,
-                   timing, controller->name(), warnings});
+                  {parameters,
+                   shaft,
+                   hub,
+                   interface,
+                   coupling,
+                   pressure,
+                   timing,
+                   controller->name(),
+                   warnings});
 
     out << "  results in " << parameters.output_directory << '\n';
     if (parameters.print_timing)

@@ -1,9 +1,7 @@
+#include <cmath>
+#include <coaxfit/contact_interface.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-
-#include <coaxfit/contact_interface.h>
-
-#include <cmath>
 #include <numeric>
 #include <stdexcept>
 
@@ -15,8 +13,8 @@ namespace coaxfit
     : d(interference)
     , z_coordinates(shaft.interface_z())
   {
-    const unsigned int n     = z_coordinates.size();
-    const double       scale = z_coordinates.empty() ? 1. : z_coordinates.back();
+    const unsigned int n = z_coordinates.size();
+    const double scale   = z_coordinates.empty() ? 1. : z_coordinates.back();
     if (n < 2 || hub.n_interface_points() != n)
       throw std::logic_error("the contact surfaces of shaft and hub do not "
                              "have matching points");
@@ -65,7 +63,7 @@ namespace coaxfit
   double
   ContactInterface::mean_pressure(const std::vector<double> &force) const
   {
-    return std::accumulate(force.begin(), force.end(), 0.) /
-           std::accumulate(lumped_weights.begin(), lumped_weights.end(), 0.);
+    return std::accumulate(force.begin(), force.end(), 0.)
+           / std::accumulate(lumped_weights.begin(), lumped_weights.end(), 0.);
   }
 } // namespace coaxfit

@@ -1,32 +1,31 @@
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/parameters.h>
-
 #include <cstring>
 #include <iostream>
 
 namespace
 {
-  const char *usage =
-    "Usage: coaxfit [--set Section/Name=value]... FILE.prm\n"
-    "       coaxfit --print-parameters\n"
-    "       coaxfit --help\n"
-    "\n"
-    "Computes the contact of an interference fit between a shaft (or tube)\n"
-    "and a hub, two coaxial elastic cylinders, by the principle of\n"
-    "alternating continuity (staggered Dirichlet-Neumann coupling).\n"
-    "\n"
-    "  --set Section/Name=value   override a parameter of FILE.prm, e.g.\n"
-    "                             --set Mesh/Global\\ refinements=2\n"
-    "                             --set Material/Hub/E=7e4\n"
-    "  --print-parameters         list every parameter with its default,\n"
-    "                             allowed values and documentation\n"
-    "  --help                     this text\n"
-    "\n"
-    "Results go to Output/Directory (default output/<FILE's base name>):\n"
-    "contact_pressure.csv, convergence.csv, summary.json, shaft.vtu,\n"
-    "hub.vtu and solution.pvd. Exit code 0: converged; 1: bad input;\n"
-    "2: the coupling did not converge or diverged.\n";
+  const char *usage
+    = "Usage: coaxfit [--set Section/Name=value]... FILE.prm\n"
+      "       coaxfit --print-parameters\n"
+      "       coaxfit --help\n"
+      "\n"
+      "Computes the contact of an interference fit between a shaft (or tube)\n"
+      "and a hub, two coaxial elastic cylinders, by the principle of\n"
+      "alternating continuity (staggered Dirichlet-Neumann coupling).\n"
+      "\n"
+      "  --set Section/Name=value   override a parameter of FILE.prm, e.g.\n"
+      "                             --set Mesh/Global\\ refinements=2\n"
+      "                             --set Material/Hub/E=7e4\n"
+      "  --print-parameters         list every parameter with its default,\n"
+      "                             allowed values and documentation\n"
+      "  --help                     this text\n"
+      "\n"
+      "Results go to Output/Directory (default output/<FILE's base name>):\n"
+      "contact_pressure.csv, convergence.csv, summary.json, shaft.vtu,\n"
+      "hub.vtu and solution.pvd. Exit code 0: converged; 1: bad input;\n"
+      "2: the coupling did not converge or diverged.\n";
 } // namespace
 
 int
@@ -57,18 +56,19 @@ main(int argc, char **argv)
               const std::string setting = argv[++i];
               const auto        eq      = setting.find('=');
               if (eq == std::string::npos)
-                throw InputError("--set " + setting +
-                                 ": expected Section/Name=value");
+                throw InputError("--set " + setting
+                                 + ": expected Section/Name=value");
               overrides.emplace_back(setting.substr(0, eq),
                                      setting.substr(eq + 1));
             }
           else if (arg.size() > 1 && arg[0] == '-')
-            throw InputError("unknown option '" + arg + "' (see coaxfit --help)");
+            throw InputError("unknown option '" + arg
+                             + "' (see coaxfit --help)");
           else if (filename.empty())
             filename = arg;
           else
-            throw InputError("more than one parameter file given ('" + filename +
-                             "' and '" + arg + "')");
+            throw InputError("more than one parameter file given ('" + filename
+                             + "' and '" + arg + "')");
         }
       if (filename.empty())
         throw InputError("no parameter file given (see coaxfit --help)");

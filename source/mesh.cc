@@ -1,8 +1,6 @@
-#include <deal.II/grid/grid_generator.h>
-
-#include <coaxfit/mesh.h>
-
 #include <cmath>
+#include <coaxfit/mesh.h>
+#include <deal.II/grid/grid_generator.h>
 #include <numeric>
 
 namespace coaxfit
@@ -28,7 +26,9 @@ namespace coaxfit
 
 
   std::vector<double>
-  growing_spacing(const double length, const double first_size, const double ratio)
+  growing_spacing(const double length,
+                  const double first_size,
+                  const double ratio)
   {
     // Smallest n for which first_size (1 + r + ... + r^(n-1)) >= length.
     unsigned int n   = 0;
@@ -57,32 +57,32 @@ namespace coaxfit
     const double wall = geometry.r_outer - geometry.r_inner;
 
     // Radial: smallest cells at the contact surface.
-    const std::vector<double> radial =
-      graded_spacing(wall,
-                     geometry.radial_cells,
-                     geometry.grading_ratio,
-                     geometry.contact_at_outer_radius);
+    const std::vector<double> radial
+      = graded_spacing(wall,
+                       geometry.radial_cells,
+                       geometry.grading_ratio,
+                       geometry.contact_at_outer_radius);
 
     // Axial: over the contact, smallest cells at the end of contact; beyond
     // it (the longer body) cells grow away from the end of contact.
-    std::vector<double> axial = graded_spacing(geometry.contact_length,
+    std::vector<double> axial  = graded_spacing(geometry.contact_length,
                                                geometry.axial_cells,
                                                geometry.grading_ratio,
                                                true);
     const double        beyond = geometry.length - geometry.contact_length;
     if (beyond > 1e-12 * geometry.length)
       {
-        const std::vector<double> extra =
-          growing_spacing(beyond, axial.back(), geometry.grading_ratio);
+        const std::vector<double> extra
+          = growing_spacing(beyond, axial.back(), geometry.grading_ratio);
         axial.insert(axial.end(), extra.begin(), extra.end());
       }
 
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {radial, axial},
-      Point<2>(geometry.r_inner, 0.),
-      Point<2>(geometry.r_outer, geometry.length),
-      false);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {radial, axial},
+                                              Point<2>(geometry.r_inner, 0.),
+                                              Point<2>(geometry.r_outer,
+                                                       geometry.length),
+                                              false);
 
     const double tol = 1e-10 * std::max(geometry.r_outer, geometry.length);
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -94,8 +94,8 @@ namespace coaxfit
               face->set_boundary_id(BoundaryId::symmetry);
             else if (geometry.r_inner == 0. && std::abs(c[0]) < tol)
               face->set_boundary_id(BoundaryId::axis);
-            else if (std::abs(c[0] - geometry.contact_radius()) < tol &&
-                     c[1] < geometry.contact_length)
+            else if (std::abs(c[0] - geometry.contact_radius()) < tol
+                     && c[1] < geometry.contact_length)
               face->set_boundary_id(BoundaryId::contact);
             else
               face->set_boundary_id(BoundaryId::free);

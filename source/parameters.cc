@@ -1,9 +1,7 @@
-#include <deal.II/base/exceptions.h>
-
+#include <cmath>
 #include <coaxfit/input_error.h>
 #include <coaxfit/parameters.h>
-
-#include <cmath>
+#include <deal.II/base/exceptions.h>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -19,9 +17,9 @@ namespace coaxfit
     std::string
     one_line(const std::exception &exc)
     {
-      std::string             text = exc.what();
-      const std::string       key  = "Additional information:";
-      const std::size_t       pos  = text.find(key);
+      std::string       text = exc.what();
+      const std::string key  = "Additional information:";
+      const std::size_t pos  = text.find(key);
       if (pos != std::string::npos)
         text = text.substr(pos + key.size());
       const std::size_t stack = text.find("Stacktrace:");
@@ -64,9 +62,18 @@ namespace coaxfit
     }
 
     std::string
+    number(const double x)
+    {
+      std::ostringstream s;
+      s.precision(10);
+      s << x;
+      return s.str();
+    }
+
+    std::string
     base_name(const std::string &filename)
     {
-      std::string name = filename;
+      std::string name  = filename;
       const auto  slash = name.find_last_of('/');
       if (slash != std::string::npos)
         name = name.substr(slash + 1);
@@ -90,12 +97,13 @@ namespace coaxfit
                         any_double,
                         "Inner radius of the shaft D1 in mm; 0 for a solid "
                         "shaft. Allowed: 0 <= R0 < R1.");
-      prm.declare_entry("R1",
-                        "100",
-                        any_double,
-                        "Nominal contact radius in mm: outer radius of the "
-                        "shaft and bore of the hub; both bodies are meshed "
-                        "at this radius (small strain). Allowed: R0 < R1 < R2.");
+      prm.declare_entry(
+        "R1",
+        "100",
+        any_double,
+        "Nominal contact radius in mm: outer radius of the "
+        "shaft and bore of the hub; both bodies are meshed "
+        "at this radius (small strain). Allowed: R0 < R1 < R2.");
       prm.declare_entry("R2",
                         "200",
                         any_double,
@@ -130,17 +138,17 @@ namespace coaxfit
           prm.declare_entry("E",
                             "2e5",
                             any_double,
-                            "Young's modulus of the " +
-                              std::string(body == "Shaft" ? "shaft D1" :
-                                                            "hub D2") +
-                              " in MPa. Allowed: E > 0.");
+                            "Young's modulus of the "
+                              + std::string(body == "Shaft" ? "shaft D1" :
+                                                              "hub D2")
+                              + " in MPa. Allowed: E > 0.");
           prm.declare_entry("nu",
                             "0.33",
                             any_double,
-                            "Poisson's ratio of the " +
-                              std::string(body == "Shaft" ? "shaft D1" :
-                                                            "hub D2") +
-                              " (dimensionless). Allowed: -1 < nu < 0.5.");
+                            "Poisson's ratio of the "
+                              + std::string(body == "Shaft" ? "shaft D1" :
+                                                              "hub D2")
+                              + " (dimensionless). Allowed: -1 < nu < 0.5.");
           prm.leave_subsection();
         }
     }
@@ -292,28 +300,29 @@ namespace coaxfit
   void
   Parameters::validate() const
   {
-    const std::vector<std::pair<std::string, double>> values = {
-      {"Geometry/R0", R0},
-      {"Geometry/R1", R1},
-      {"Geometry/R2", R2},
-      {"Geometry/L1", L1},
-      {"Geometry/L2", L2},
-      {"Geometry/d", d},
-      {"Material/Shaft/E", shaft.E},
-      {"Material/Shaft/nu", shaft.nu},
-      {"Material/Hub/E", hub.E},
-      {"Material/Hub/nu", hub.nu},
-      {"Mesh/Grading ratio", grading_ratio},
-      {"Coupling/Alpha", alpha},
-      {"Coupling/Tolerance", tolerance}};
+    const std::vector<std::pair<std::string, double>> values
+      = {{"Geometry/R0", R0},
+         {"Geometry/R1", R1},
+         {"Geometry/R2", R2},
+         {"Geometry/L1", L1},
+         {"Geometry/L2", L2},
+         {"Geometry/d", d},
+         {"Material/Shaft/E", shaft.E},
+         {"Material/Shaft/nu", shaft.nu},
+         {"Material/Hub/E", hub.E},
+         {"Material/Hub/nu", hub.nu},
+         {"Mesh/Grading ratio", grading_ratio},
+         {"Coupling/Alpha", alpha},
+         {"Coupling/Tolerance", tolerance}};
     for (const auto &[name, value] : values)
       require(std::isfinite(value), name, value, "a finite number");
 
     require(R0 >= 0., "Geometry/R0", R0, "0 <= R0 < R1");
-    require(R1 > R0, "Geometry/R1", R1, "R0 < R1 < R2 (R0 = " +
-                                          std::to_string(R0) + ")");
-    require(R2 > R1, "Geometry/R2", R2, "R2 > R1 (R1 = " +
-                                          std::to_string(R1) + ")");
+    require(R1 > R0,
+            "Geometry/R1",
+            R1,
+            "R0 < R1 < R2 (R0 = " + number(R0) + ")");
+    require(R2 > R1, "Geometry/R2", R2, "R2 > R1 (R1 = " + number(R1) + ")");
     require(L1 > 0., "Geometry/L1", L1, "L1 > 0");
     require(L2 > 0., "Geometry/L2", L2, "L2 > 0");
     require(d > 0., "Geometry/d", d, "0 < d < R1 - R0");
@@ -360,8 +369,11 @@ namespace coaxfit
       }
     catch (const std::exception &exc)
       {
-        throw InputError("in parameter file '" + filename +
-                         "': " + one_line(exc));
+        // deal.II's messages about a line already name the file.
+        const std::string message = one_line(exc);
+        throw InputError(message.find("of file <") != std::string::npos ?
+                           message :
+                           "in parameter file '" + filename + "': " + message);
       }
 
     for (const auto &[path, value] : overrides)
@@ -377,8 +389,8 @@ namespace coaxfit
             start = slash + 1;
           }
         if (parts.size() < 2)
-          throw InputError("--set " + path + "=" + value +
-                           ": expected Section/Name=value");
+          throw InputError("--set " + path + "=" + value
+                           + ": expected Section/Name=value");
         try
           {
             for (std::size_t i = 0; i + 1 < parts.size(); ++i)
@@ -389,8 +401,8 @@ namespace coaxfit
           }
         catch (const std::exception &exc)
           {
-            throw InputError("--set " + path + "=" + value + ": " +
-                             one_line(exc));
+            throw InputError("--set " + path + "=" + value + ": "
+                             + one_line(exc));
           }
       }
 

@@ -1,7 +1,6 @@
+#include <algorithm>
 #include <coaxfit/lame.h>
 #include <coaxfit/results.h>
-
-#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -51,10 +50,10 @@ namespace coaxfit
                          parameters.hub))
   {
     const auto [lo, hi] = std::minmax_element(pressure.begin(), pressure.end());
-    min      = *lo;
-    z_of_min = interface.z()[lo - pressure.begin()];
-    max      = *hi;
-    z_of_max = interface.z()[hi - pressure.begin()];
+    min                 = *lo;
+    z_of_min            = interface.z()[lo - pressure.begin()];
+    max                 = *hi;
+    z_of_max            = interface.z()[hi - pressure.begin()];
   }
 
 
@@ -70,15 +69,16 @@ namespace coaxfit
     for (unsigned int i = 0; i < interface.n_points(); ++i)
       out << interface.z()[i] << ',' << pressure.pressure[i] << ','
           << coupling.u_shaft()[i] << ',' << coupling.u_hub()[i] << ','
-          << coupling.u_hub()[i] - coupling.u_shaft()[i] -
-               interface.interference()
+          << coupling.u_hub()[i] - coupling.u_shaft()[i]
+               - interface.interference()
           << ",contact\n";
   }
 
 
 
   void
-  write_convergence(const std::string &filename, const StaggeredCoupling &coupling)
+  write_convergence(const std::string       &filename,
+                    const StaggeredCoupling &coupling)
   {
     std::ofstream out = open(filename);
     out << "step,kind,alpha,displacement_mismatch_relative,"
@@ -94,8 +94,8 @@ namespace coaxfit
   void
   write_summary(const std::string &filename, const SummaryData &data)
   {
-    const Parameters      &p  = data.parameters;
-    const PressureSummary &ps = data.pressure;
+    const Parameters      &p   = data.parameters;
+    const PressureSummary &ps  = data.pressure;
     std::ofstream          out = open(filename);
 
     out << "{\n"
@@ -107,9 +107,8 @@ namespace coaxfit
         << data.coupling.steps_to_displacement_mismatch(1e-2) << ",\n";
 
     out << "  \"geometry\": {\"R0\": " << p.R0 << ", \"R1\": " << p.R1
-        << ", \"R2\": " << p.R2 << ", \"L1\": " << p.L1
-        << ", \"L2\": " << p.L2 << ", \"d\": " << p.d
-        << ", \"contact_length\": " << p.contact_length()
+        << ", \"R2\": " << p.R2 << ", \"L1\": " << p.L1 << ", \"L2\": " << p.L2
+        << ", \"d\": " << p.d << ", \"contact_length\": " << p.contact_length()
         << ", \"units\": \"mm, L1 and L2 are half lengths\"},\n";
     out << "  \"material\": {\"shaft\": {\"E\": " << p.shaft.E
         << ", \"nu\": " << p.shaft.nu << "}, \"hub\": {\"E\": " << p.hub.E

@@ -1,10 +1,8 @@
-#include <deal.II/base/thread_management.h>
-
-#include <coaxfit/input_error.h>
-#include <coaxfit/staggered_coupling.h>
-
 #include <algorithm>
 #include <cmath>
+#include <coaxfit/input_error.h>
+#include <coaxfit/staggered_coupling.h>
+#include <deal.II/base/thread_management.h>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -90,8 +88,8 @@ namespace coaxfit
     for (unsigned int i = 0; i < n; ++i)
       {
         mismatch  = std::max(mismatch, std::abs(f2[i] - f1[i]) / w[i]);
-        magnitude = std::max({magnitude, std::abs(f1[i]) / w[i],
-                              std::abs(f2[i]) / w[i]});
+        magnitude = std::max(
+          {magnitude, std::abs(f1[i]) / w[i], std::abs(f2[i]) / w[i]});
       }
     last_traction_mismatch = mismatch / magnitude;
     if (!std::isfinite(last_traction_mismatch))
@@ -126,8 +124,8 @@ namespace coaxfit
         load += neumann_force[i] * neumann_force[i] / interface.weights()[i];
       }
     std::ostringstream msg;
-    if (!(load > 0.) || !(work1 > 0.) || !(work2 > 0.) ||
-        !std::isfinite(work1 + work2))
+    if (!(load > 0.) || !(work1 > 0.) || !(work2 > 0.)
+        || !std::isfinite(work1 + work2))
       {
         msg << "try a value of Coupling/Alpha closer to the paper's table";
         return msg.str();
@@ -163,16 +161,17 @@ namespace coaxfit
       {
         // The same kind of residual grew in each of the last four steps of
         // that kind.
-        const unsigned int window = 4;
+        const unsigned int  window = 4;
         std::vector<double> same_kind;
         for (auto it = history_rows.rbegin();
              it != history_rows.rend() && same_kind.size() <= window;
              ++it)
           if (it->neumann == neumann)
             same_kind.push_back(residual(*it));
-        if (same_kind.size() > window &&
-            std::is_sorted(same_kind.rbegin(), same_kind.rend(),
-                           [](double a, double b) { return a <= b; }))
+        if (same_kind.size() > window
+            && std::is_sorted(same_kind.rbegin(),
+                              same_kind.rend(),
+                              [](double a, double b) { return a <= b; }))
           {
             std::ostringstream s;
             s << std::setprecision(3) << "the "
@@ -235,8 +234,8 @@ namespace coaxfit
               line << "-           " << s.traction_mismatch;
             *progress << line.str() << std::endl;
           }
-        if (last_displacement_mismatch < tolerance &&
-            last_traction_mismatch < tolerance)
+        if (last_displacement_mismatch < tolerance
+            && last_traction_mismatch < tolerance)
           {
             has_converged = true;
             break;
@@ -249,7 +248,8 @@ namespace coaxfit
 
 
   unsigned int
-  StaggeredCoupling::steps_to_displacement_mismatch(const double criterion) const
+  StaggeredCoupling::steps_to_displacement_mismatch(
+    const double criterion) const
   {
     for (const CouplingStep &s : history_rows)
       if (s.neumann && s.displacement_mismatch < criterion)

@@ -2,7 +2,6 @@
 #define coaxfit_alpha_controller_h
 
 #include <coaxfit/parameters.h>
-
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,7 +40,8 @@ namespace coaxfit
      * Dirichlet step and the Neumann step that follows it.
      */
     virtual void
-    update(const NeumannState &state) = 0;
+    update(const NeumannState &state)
+      = 0;
 
     /** Alpha at interface point @p i. */
     virtual double

@@ -1,12 +1,10 @@
 #ifndef coaxfit_axisymmetric_h
 #define coaxfit_axisymmetric_h
 
-#include <deal.II/base/tensor.h>
-
-#include <coaxfit/parameters.h>
-
 #include <array>
 #include <cmath>
+#include <coaxfit/parameters.h>
+#include <deal.II/base/tensor.h>
 
 namespace coaxfit
 {
@@ -29,10 +27,10 @@ namespace coaxfit
      * its limit du_r/dr.
      */
     inline Vector4
-    strain(const double             u_r,
-           const Tensor<1, 2>      &grad_u_r,
-           const Tensor<1, 2>      &grad_u_z,
-           const double             r)
+    strain(const double        u_r,
+           const Tensor<1, 2> &grad_u_r,
+           const Tensor<1, 2> &grad_u_z,
+           const double        r)
     {
       const double e_tt = (r > 0.) ? u_r / r : grad_u_r[0];
       return {{grad_u_r[0], grad_u_z[1], e_tt, grad_u_r[1] + grad_u_z[0]}};

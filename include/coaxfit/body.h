@@ -1,23 +1,17 @@
 #ifndef coaxfit_body_h
 #define coaxfit_body_h
 
+#include <coaxfit/mesh.h>
+#include <coaxfit/parameters.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
-
 #include <deal.II/grid/tria.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-
-#include <coaxfit/mesh.h>
-#include <coaxfit/parameters.h>
-
 #include <deque>
 #include <map>
 #include <memory>
@@ -92,8 +86,7 @@ namespace coaxfit
 
     /** Dirichlet step: u_r on all of S gives the nodal reactions on S. */
     void
-    solve_dirichlet(const std::vector<double> &u_r,
-                    std::vector<double>       &force);
+    solve_dirichlet(const std::vector<double> &u_r, std::vector<double> &force);
 
     /**
      * Write the last solution as VTU: displacement (mm), the stresses

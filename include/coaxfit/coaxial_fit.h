@@ -3,7 +3,6 @@
 
 #include <coaxfit/body.h>
 #include <coaxfit/parameters.h>
-
 #include <ostream>
 
 namespace coaxfit

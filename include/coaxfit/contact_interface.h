@@ -1,12 +1,10 @@
 #ifndef coaxfit_contact_interface_h
 #define coaxfit_contact_interface_h
 
+#include <coaxfit/body.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-
-#include <coaxfit/body.h>
-
 #include <vector>
 
 namespace coaxfit
@@ -75,12 +73,12 @@ namespace coaxfit
     mean_pressure(const std::vector<double> &force) const;
 
   private:
-    double                d;
-    std::vector<double>   z_coordinates;
-    std::vector<double>   lumped_weights;
-    SparsityPattern       sparsity;
-    SparseMatrix<double>  mass_matrix;
-    SparseDirectUMFPACK   mass_solver;
+    double               d;
+    std::vector<double>  z_coordinates;
+    std::vector<double>  lumped_weights;
+    SparsityPattern      sparsity;
+    SparseMatrix<double> mass_matrix;
+    SparseDirectUMFPACK  mass_solver;
   };
 } // namespace coaxfit
 

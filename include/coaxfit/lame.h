@@ -5,6 +5,11 @@
 
 namespace coaxfit
 {
+  class Body;
+}
+
+namespace coaxfit
+{
   /**
    * Lame's exact solution for a thick-walled cylinder a <= r <= b (a = 0:
    * solid) with free (open) ends: sigma_zz = sigma_rz = 0, internal
@@ -52,6 +57,21 @@ namespace coaxfit
                 double          d,
                 const Material &shaft,
                 const Material &hub);
+
+  /** Relative errors of a body's solution against a Lame solution. */
+  struct LameErrors
+  {
+    double displacement_L2;  ///< ||u - u_h|| / ||u||, r-weighted L2 norm
+    double hoop_stress_L2;   ///< ||sigma_tt - sigma_tt,h|| / ||sigma_tt||
+    double radial_stress_L2; ///< ||sigma_rr - sigma_rr,h|| / ||sigma_rr||
+  };
+
+  /**
+   * Errors of the last solution of @p body against @p exact, integrated
+   * with the axisymmetric weight r by a Gauss rule of degree + 3 points.
+   */
+  LameErrors
+  lame_errors(const Body &body, const LameCylinder &exact);
 } // namespace coaxfit
 
 #endif

@@ -2,7 +2,6 @@
 #define coaxfit_mesh_h
 
 #include <deal.II/grid/tria.h>
-
 #include <vector>
 
 namespace coaxfit
@@ -16,7 +15,7 @@ namespace coaxfit
     constexpr types::boundary_id symmetry = 1; ///< z = 0: u_z = 0
     constexpr types::boundary_id contact  = 2; ///< S: coupling data
     constexpr types::boundary_id free     = 3; ///< traction free
-  } // namespace BoundaryId
+  }                                            // namespace BoundaryId
 
   /**
    * The (r, z) half section of one cylinder, z >= 0, and how to mesh it.
@@ -28,10 +27,10 @@ namespace coaxfit
    */
   struct BodyGeometry
   {
-    double r_inner        = 0.;  ///< mm; 0 gives a solid cylinder with an axis
-    double r_outer        = 1.;  ///< mm
-    double length         = 1.;  ///< half length (mm)
-    double contact_length = 1.;  ///< 0 < contact_length <= length (mm)
+    double r_inner        = 0.; ///< mm; 0 gives a solid cylinder with an axis
+    double r_outer        = 1.; ///< mm
+    double length         = 1.; ///< half length (mm)
+    double contact_length = 1.; ///< 0 < contact_length <= length (mm)
     bool   contact_at_outer_radius = true;
 
     unsigned int axial_cells        = 12;  ///< over the contact length
@@ -60,10 +59,7 @@ namespace coaxfit
    * the end (fine_at_end) or at the start.
    */
   std::vector<double>
-  graded_spacing(double       length,
-                 unsigned int n,
-                 double       ratio,
-                 bool         fine_at_end);
+  graded_spacing(double length, unsigned int n, double ratio, bool fine_at_end);
 
   /**
    * Cells that continue a progression beyond a point where the neighbouring

@@ -2,7 +2,6 @@
 #define coaxfit_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,12 +48,12 @@ namespace coaxfit
   {
     /** @name Geometry (mm) */
     /** @{ */
-    double R0 = 0.;    ///< inner radius of the shaft (0: solid shaft)
-    double R1 = 100.;  ///< nominal contact radius
-    double R2 = 200.;  ///< outer radius of the hub
-    double L1 = 200.;  ///< half length of the shaft
-    double L2 = 100.;  ///< half length of the hub
-    double d  = 0.25;  ///< radial interference
+    double R0 = 0.;   ///< inner radius of the shaft (0: solid shaft)
+    double R1 = 100.; ///< nominal contact radius
+    double R2 = 200.; ///< outer radius of the hub
+    double L1 = 200.; ///< half length of the shaft
+    double L2 = 100.; ///< half length of the hub
+    double d  = 0.25; ///< radial interference
     /** @} */
 
     Material shaft; ///< material of D1 (shaft or tube)

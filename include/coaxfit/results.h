@@ -4,7 +4,6 @@
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/staggered_coupling.h>
-
 #include <string>
 #include <vector>
 
@@ -36,21 +35,22 @@ namespace coaxfit
     double              max, z_of_max;
     double              lame;
 
-    PressureSummary(const Parameters             &parameters,
-                    const ContactInterface       &interface,
-                    const std::vector<double>    &force);
+    PressureSummary(const Parameters          &parameters,
+                    const ContactInterface    &interface,
+                    const std::vector<double> &force);
   };
 
   /** contact_pressure.csv: z, pressure, u_r of both bodies, gap, status. */
   void
-  write_contact_pressure(const std::string         &filename,
-                         const ContactInterface    &interface,
-                         const PressureSummary     &pressure,
-                         const StaggeredCoupling   &coupling);
+  write_contact_pressure(const std::string       &filename,
+                         const ContactInterface  &interface,
+                         const PressureSummary   &pressure,
+                         const StaggeredCoupling &coupling);
 
   /** convergence.csv: one row per coupling step. */
   void
-  write_convergence(const std::string &filename, const StaggeredCoupling &coupling);
+  write_convergence(const std::string       &filename,
+                    const StaggeredCoupling &coupling);
 
   /** Everything a script needs to know about a run, as JSON. */
   struct SummaryData

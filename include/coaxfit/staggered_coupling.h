@@ -4,7 +4,6 @@
 #include <coaxfit/alpha_controller.h>
 #include <coaxfit/body.h>
 #include <coaxfit/contact_interface.h>
-
 #include <ostream>
 #include <vector>
 

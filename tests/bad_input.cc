@@ -1,0 +1,99 @@
+// Bad input: each invalid parameter file or command line must stop coaxfit
+// before any work with a one-line message naming the parameter (or file)
+// and the allowed range, exit code 1, and no output directory.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace
+{
+  const std::string valid = "subsection Geometry\n"
+                            "  set R0 = 0\n"
+                            "  set R1 = 100\n"
+                            "  set R2 = 200\n"
+                            "  set L1 = 200\n"
+                            "  set L2 = 100\n"
+                            "  set d = 0.25\n"
+                            "end\n";
+
+  /** Run coaxfit with @p arguments; print its stderr line and exit code. */
+  void
+  run(const std::string &label, const std::string &arguments)
+  {
+    const std::string directory = "out_" + label;
+    std::filesystem::remove_all(directory);
+    const std::string command = std::string(COAXFIT_EXECUTABLE)
+                                + " --set Output/Directory=" + directory + " "
+                                + arguments + " 2>&1 >/dev/null";
+    FILE       *pipe = popen(command.c_str(), "r");
+    std::string message;
+    char        buffer[4096];
+    while (fgets(buffer, sizeof(buffer), pipe))
+      message += buffer;
+    const int    status = pclose(pipe);
+    const int    code   = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    unsigned int lines  = 0;
+    for (const char c : message)
+      lines += (c == '\n');
+    std::cout << label << ": exit code " << code << ", " << lines
+              << " line(s), output directory written: "
+              << (std::filesystem::exists(directory) ? "YES" : "no") << '\n'
+              << "  " << message;
+  }
+
+  /** Write the valid file with one line added in section Geometry. */
+  std::string
+  file_with(const std::string &label, const std::string &extra)
+  {
+    const std::string name = label + ".prm";
+    std::ofstream(name) << valid << extra;
+    return name;
+  }
+
+  std::string
+  geometry(const std::string &label, const std::string &entry)
+  {
+    return file_with(label, "subsection Geometry\n  set " + entry + "\nend\n");
+  }
+} // namespace
+
+int
+main()
+{
+  run("R0_not_below_R1", geometry("R0_not_below_R1", "R0 = 100"));
+  run("R1_not_below_R2", geometry("R1_not_below_R2", "R2 = 90"));
+  run("d_zero", geometry("d_zero", "d = 0"));
+  run("L1_negative", geometry("L1_negative", "L1 = -5"));
+  run("d_nan", geometry("d_nan", "d = nan"));
+  run("malformed_number", geometry("malformed_number", "R2 = 2e5x"));
+  run("nu_half",
+      file_with("nu_half",
+                "subsection Material\n subsection Hub\n  set nu = 0.5\n "
+                "end\nend\n"));
+  run("E_negative",
+      file_with("E_negative",
+                "subsection Material\n subsection Shaft\n  set E = -1\n "
+                "end\nend\n"));
+  run("alpha_one",
+      file_with("alpha_one", "subsection Coupling\n  set Alpha = 1\nend\n"));
+  run("unknown_entry", geometry("unknown_entry", "R3 = 5"));
+  run("unknown_section",
+      file_with("unknown_section",
+                "subsection Geometrie\n  set R1 = 5\nend\n"));
+  run("unknown_controller",
+      file_with("unknown_controller",
+                "subsection Coupling\n  set Alpha controller = magic\nend\n"));
+  run("set_out_of_range",
+      "--set Mesh/Degree=7 " + file_with("set_out_of_range", ""));
+  run("unknown_option", "--fast " + file_with("unknown_option", ""));
+  run("missing_file", "no_such_file.prm");
+  std::ofstream("a_file") << "x";
+  run("directory_not_creatable",
+      "--set Output/Directory=a_file/sub "
+        + file_with("directory_not_creatable", ""));
+}

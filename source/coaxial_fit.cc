@@ -78,79 +78,87 @@ namespace coaxfit
 
 
 
-  bool
-  CoaxialFit::run(std::ostream &out)
+  void
+  CoaxialFit::setup_system()
   {
-    Timer  total_timer;
-    Timing timing;
-    make_output_directory(parameters.output_directory);
-
     Timer timer;
     shaft.setup_system();
     hub.setup_system();
     shaft.assemble_system();
     hub.assemble_system();
-    const ContactInterface interface(shaft, hub, parameters.d);
+    interface    = std::make_unique<ContactInterface>(shaft, hub, parameters.d);
     timing.setup = timer.wall_time();
-
-    out << "coaxfit: case " << parameters.case_name << '\n'
-        << "  shaft: " << shaft.n_cells() << " cells, " << shaft.n_dofs()
-        << " DoFs;  hub: " << hub.n_cells() << " cells, " << hub.n_dofs()
-        << " DoFs;  " << interface.n_points() << " interface points, FE_Q("
-        << parameters.degree << ")\n";
 
     // Both constraint sets of the bilateral process, factorized up front
     // and concurrently.
     timer.restart();
-    {
-      const std::vector<bool> none(interface.n_points(), false);
-      const std::vector<bool> all(interface.n_points(), true);
-      Threads::Task<void>     task = Threads::new_task(
-        [&]() { shaft.factorize(none), shaft.factorize(all); });
-      hub.factorize(none);
-      hub.factorize(all);
-      task.join();
-    }
+    const std::vector<bool> none(interface->n_points(), false);
+    const std::vector<bool> all(interface->n_points(), true);
+    Threads::Task<void>     task = Threads::new_task([&]() {
+      shaft.factorize(none);
+      shaft.factorize(all);
+    });
+    hub.factorize(none);
+    hub.factorize(all);
+    task.join();
     timing.factorization = timer.wall_time();
+  }
 
-    timer.restart();
-    const std::unique_ptr<AlphaController> controller
-      = make_alpha_controller(parameters);
-    StaggeredCoupling coupling(shaft,
-                               hub,
-                               interface,
-                               *controller,
-                               parameters.tolerance,
-                               parameters.max_steps);
-    const bool        converged = coupling.run(&out);
-    timing.coupling             = timer.wall_time();
 
-    timer.restart();
-    const PressureSummary    pressure(parameters,
-                                   interface,
-                                   coupling.contact_force());
+
+  bool
+  CoaxialFit::solve(std::ostream *progress)
+  {
+    Timer timer;
+    controller           = make_alpha_controller(parameters);
+    coupling             = std::make_unique<StaggeredCoupling>(shaft,
+                                                   hub,
+                                                   *interface,
+                                                   *controller,
+                                                   parameters.tolerance,
+                                                   parameters.max_steps);
+    const bool converged = coupling->run(progress);
+    timing.coupling      = timer.wall_time();
+    return converged;
+  }
+
+
+
+  PressureSummary
+  CoaxialFit::pressure_summary() const
+  {
+    return PressureSummary(parameters, *interface, coupling->contact_force());
+  }
+
+
+
+  void
+  CoaxialFit::output_results(std::ostream &out)
+  {
+    Timer                    timer;
+    const PressureSummary    pressure = pressure_summary();
     std::vector<std::string> warnings;
     std::ostringstream       report;
     report << std::fixed << std::setprecision(4);
-    if (converged)
-      report << "  converged in " << coupling.n_steps() << " steps ("
-             << coupling.steps_to_displacement_mismatch(1e-2)
+    if (coupling->converged())
+      report << "  converged in " << coupling->n_steps() << " steps ("
+             << coupling->steps_to_displacement_mismatch(1e-2)
              << " to the paper's criterion max|du|/d < 1e-2)\n";
     else
       {
         std::ostringstream w;
         w << "not converged within Coupling/Max steps = "
           << parameters.max_steps << " (|du|/d = " << std::scientific
-          << std::setprecision(3) << coupling.displacement_residual()
-          << ", |dp|/p = " << coupling.traction_residual() << ")";
+          << std::setprecision(3) << coupling->displacement_residual()
+          << ", |dp|/p = " << coupling->traction_residual() << ")";
         warnings.push_back(w.str());
       }
     if (pressure.min < 0.)
       {
         std::ostringstream w;
         w << std::setprecision(4)
-          << "the bilateral contact pressure is tensile "
-          << "(min " << pressure.min << " MPa at z = " << pressure.z_of_min
+          << "the bilateral contact pressure is tensile (min " << pressure.min
+          << " MPa at z = " << pressure.z_of_min
           << " mm): the surfaces want to separate there, which this "
           << "bilateral solution does not allow";
         warnings.push_back(w.str());
@@ -161,35 +169,36 @@ namespace coaxfit
            << "  pressure min: " << pressure.min
            << " MPa at z = " << pressure.z_of_min
            << " mm, max: " << pressure.max
-           << " MPa at z = " << pressure.z_of_max << " mm (corner value is "
-           << "singular)\n";
+           << " MPa at z = " << pressure.z_of_max
+           << " mm (corner value is singular)\n";
     for (const std::string &w : warnings)
       report << "  warning: " << w << '\n';
     out << report.str();
 
     const std::string dir = parameters.output_directory + "/";
     write_contact_pressure(dir + "contact_pressure.csv",
-                           interface,
+                           *interface,
                            pressure,
-                           coupling);
-    write_convergence(dir + "convergence.csv", coupling);
+                           *coupling);
+    write_convergence(dir + "convergence.csv", *coupling);
     if (parameters.write_vtu)
       {
         shaft.output_results(dir + "shaft.vtu");
         hub.output_results(dir + "hub.vtu");
-        std::vector<std::pair<double, std::string>> records
+        const std::vector<std::pair<double, std::string>> records
           = {{0., "shaft.vtu"}, {0., "hub.vtu"}};
         std::ofstream pvd(dir + "solution.pvd");
         DataOutBase::write_pvd_record(pvd, records);
       }
     timing.output = timer.wall_time();
-    timing.total  = total_timer.wall_time();
+    timing.total
+      = timing.setup + timing.factorization + timing.coupling + timing.output;
     write_summary(dir + "summary.json",
                   {parameters,
                    shaft,
                    hub,
-                   interface,
-                   coupling,
+                   *interface,
+                   *coupling,
                    pressure,
                    timing,
                    controller->name(),
@@ -201,6 +210,22 @@ namespace coaxfit
           << timing.setup << " s, factorization " << timing.factorization
           << " s, coupling " << timing.coupling << " s, output "
           << timing.output << " s, total " << timing.total << " s\n";
+  }
+
+
+
+  bool
+  CoaxialFit::run(std::ostream &out)
+  {
+    make_output_directory(parameters.output_directory);
+    setup_system();
+    out << "coaxfit: case " << parameters.case_name << '\n'
+        << "  shaft: " << shaft.n_cells() << " cells, " << shaft.n_dofs()
+        << " DoFs;  hub: " << hub.n_cells() << " cells, " << hub.n_dofs()
+        << " DoFs;  " << interface->n_points() << " interface points, FE_Q("
+        << parameters.degree << ")\n";
+    const bool converged = solve(&out);
+    output_results(out);
     return converged;
   }
 } // namespace coaxfit

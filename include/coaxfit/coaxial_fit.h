@@ -1,17 +1,24 @@
 #ifndef coaxfit_coaxial_fit_h
 #define coaxfit_coaxial_fit_h
 
+#include <coaxfit/alpha_controller.h>
 #include <coaxfit/body.h>
+#include <coaxfit/contact_interface.h>
 #include <coaxfit/parameters.h>
+#include <coaxfit/results.h>
+#include <coaxfit/staggered_coupling.h>
+#include <memory>
 #include <ostream>
 
 namespace coaxfit
 {
   /**
-   * One coaxfit run: builds the shaft D1 and the hub D2 with matching
-   * contact surfaces, runs the staggered coupling and writes the results
-   * (contact_pressure.csv, convergence.csv, summary.json, VTU + PVD) to the
-   * output directory. Progress goes to the stream given to run().
+   * One coaxfit run, in deal.II's tutorial structure: setup_system() builds
+   * the shaft D1 and the hub D2 with matching contact surfaces, their
+   * interface and factorizations; solve() runs the staggered coupling;
+   * output_results() writes contact_pressure.csv, convergence.csv,
+   * summary.json and VTU + PVD to the output directory. run() does all
+   * three.
    */
   class CoaxialFit
   {
@@ -19,11 +26,42 @@ namespace coaxfit
     explicit CoaxialFit(const Parameters &parameters);
 
     /**
-     * Run the case. Returns true if the coupling converged; throws
-     * SolverError if it diverged (then no result file is written).
+     * Run the case, printing progress to @p out. Returns true if the
+     * coupling converged; throws SolverError if it diverged (then no result
+     * file is written).
      */
     bool
     run(std::ostream &out);
+
+    /** Meshes, DoFs, matrices, the contact interface, factorizations. */
+    void
+    setup_system();
+
+    /** The coupling iteration; one line per step to @p progress if given. */
+    bool
+    solve(std::ostream *progress);
+
+    /** Write the result files and print a short report to @p out. */
+    void
+    output_results(std::ostream &out);
+
+    /** The coupling (after solve()). */
+    const StaggeredCoupling &
+    get_coupling() const
+    {
+      return *coupling;
+    }
+
+    /** The contact interface (after setup_system()). */
+    const ContactInterface &
+    get_interface() const
+    {
+      return *interface;
+    }
+
+    /** Pressures of the current state (after solve()). */
+    PressureSummary
+    pressure_summary() const;
 
     /** Geometry of the shaft D1 as meshed for these parameters. */
     static BodyGeometry
@@ -34,9 +72,13 @@ namespace coaxfit
     hub_geometry(const Parameters &parameters);
 
   private:
-    const Parameters parameters;
-    Body             shaft;
-    Body             hub;
+    const Parameters                   parameters;
+    Body                               shaft;
+    Body                               hub;
+    std::unique_ptr<ContactInterface>  interface;
+    std::unique_ptr<AlphaController>   controller;
+    std::unique_ptr<StaggeredCoupling> coupling;
+    Timing                             timing;
   };
 } // namespace coaxfit
 

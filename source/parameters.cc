@@ -203,10 +203,43 @@ namespace coaxfit
                         "solid shaft wants alpha near 1, a thin tube near 0. "
                         "Allowed: 0 < alpha < 1.");
       prm.declare_entry("Alpha controller",
-                        "fixed",
-                        Patterns::Selection("fixed"),
-                        "How alpha is chosen in each step. fixed: the "
-                        "constant Coupling/Alpha.");
+                        "iqn-ils",
+                        Patterns::Selection(
+                          "fixed|winkler|pointwise|aitken|iqn-ils"),
+                        "How the staggered process is steered. fixed: the "
+                        "constant Coupling/Alpha. winkler: one alpha = "
+                        "k2/(k1 + k2) from the bodies' current compliances, "
+                        "formulas (4.20)-(4.21), re-estimated after every "
+                        "Neumann step. pointwise: an alpha per interface "
+                        "point by (4.22) with Coupling/Beta. aitken: "
+                        "Winkler alpha plus dynamic (Aitken) relaxation of "
+                        "the traction iterate. iqn-ils: Winkler alpha plus "
+                        "interface quasi-Newton (inverse least squares) "
+                        "acceleration. Coupling/Alpha is the first alpha of "
+                        "the adaptive controllers.");
+      prm.declare_entry("Beta",
+                        "0.5",
+                        any_double,
+                        "beta of the pointwise controller, formula (4.22): "
+                        "alpha_i = beta u2/((1 - beta) u1 + beta u2); 0.5 "
+                        "gives (4.21). Allowed: 0 < beta < 1.");
+      prm.declare_entry("Aitken initial omega",
+                        "1",
+                        any_double,
+                        "Relaxation factor of the first Aitken step (1: "
+                        "the plain process). Allowed: 0 < omega <= 2.");
+      prm.declare_entry("IQN-ILS columns",
+                        "50",
+                        Patterns::Integer(1, 1000),
+                        "Largest number of previous iterations the IQN-ILS "
+                        "model keeps. Allowed: 1 to 1000.");
+      prm.declare_entry("IQN-ILS filter",
+                        "1e-10",
+                        any_double,
+                        "QR filter of IQN-ILS: a column whose part "
+                        "orthogonal to the newer columns is below this "
+                        "fraction of its norm is dropped. Allowed: 0 <= "
+                        "filter < 1.");
       prm.declare_entry("Tolerance",
                         "1e-8",
                         any_double,
@@ -286,6 +319,10 @@ namespace coaxfit
     alpha_controller = prm.get("Alpha controller");
     tolerance        = prm.get_double("Tolerance");
     max_steps        = prm.get_integer("Max steps");
+    beta             = prm.get_double("Beta");
+    aitken_omega     = prm.get_double("Aitken initial omega");
+    iqn_columns      = prm.get_integer("IQN-ILS columns");
+    iqn_filter       = prm.get_double("IQN-ILS filter");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -313,7 +350,10 @@ namespace coaxfit
          {"Material/Hub/nu", hub.nu},
          {"Mesh/Grading ratio", grading_ratio},
          {"Coupling/Alpha", alpha},
-         {"Coupling/Tolerance", tolerance}};
+         {"Coupling/Tolerance", tolerance},
+         {"Coupling/Beta", beta},
+         {"Coupling/Aitken initial omega", aitken_omega},
+         {"Coupling/IQN-ILS filter", iqn_filter}};
     for (const auto &[name, value] : values)
       require(std::isfinite(value), name, value, "a finite number");
 
@@ -338,6 +378,15 @@ namespace coaxfit
             hub.nu,
             "-1 < nu < 0.5");
     require(alpha > 0. && alpha < 1., "Coupling/Alpha", alpha, "0 < alpha < 1");
+    require(beta > 0. && beta < 1., "Coupling/Beta", beta, "0 < beta < 1");
+    require(aitken_omega > 0. && aitken_omega <= 2.,
+            "Coupling/Aitken initial omega",
+            aitken_omega,
+            "0 < omega <= 2");
+    require(iqn_filter >= 0. && iqn_filter < 1.,
+            "Coupling/IQN-ILS filter",
+            iqn_filter,
+            "0 <= filter < 1");
     require(tolerance >= 1e-14 && tolerance < 1.,
             "Coupling/Tolerance",
             tolerance,

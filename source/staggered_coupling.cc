@@ -45,6 +45,7 @@ namespace coaxfit
   void
   StaggeredCoupling::neumann_step()
   {
+    force = next_force;
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
 
@@ -99,6 +100,8 @@ namespace coaxfit
     u2 = u_hub;
     for (unsigned int i = 0; i < n; ++i)
       force[i] = f1[i] + controller.alpha(i) * (f2[i] - f1[i]);
+    next_force = force;
+    controller.accelerate(neumann_force, next_force);
 
     history_rows.push_back({static_cast<unsigned int>(history_rows.size() + 1),
                             false,
@@ -200,6 +203,7 @@ namespace coaxfit
   {
     const unsigned int n = interface.n_points();
     force.assign(n, 0.); // the paper's zero approximation
+    next_force = force;
     u1.assign(n, 0.);
     u2.assign(n, 0.);
     history_rows.clear();
@@ -215,7 +219,8 @@ namespace coaxfit
         if (history_rows.size() % 2 == 0)
           {
             neumann_step();
-            controller.update({history_rows.back().step, force, u1, u2});
+            controller.update(
+              {history_rows.back().step, force, u1, u2, interface.weights()});
           }
         else
           dirichlet_step();

@@ -14,7 +14,8 @@ main()
   for (const double alpha : {0.7, 0.9})
     {
       coaxfit::Parameters p; // variant 5 on the paper's coarse mesh
-      p.alpha = alpha;
+      p.alpha            = alpha;
+      p.alpha_controller = "fixed"; // the paper's process
       coaxfit::CoaxialFit fit(p);
       fit.setup_system();
       const bool converged = fit.solve(nullptr);

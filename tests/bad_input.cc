@@ -88,6 +88,13 @@ main()
   run("unknown_controller",
       file_with("unknown_controller",
                 "subsection Coupling\n  set Alpha controller = magic\nend\n"));
+  run("beta_out_of_range",
+      file_with("beta_out_of_range",
+                "subsection Coupling\n  set Alpha controller = pointwise\n"
+                "  set Beta = 2\nend\n"));
+  run("iqn_filter_negative",
+      file_with("iqn_filter_negative",
+                "subsection Coupling\n  set IQN-ILS filter = -1\nend\n"));
   run("set_out_of_range",
       "--set Mesh/Degree=7 " + file_with("set_out_of_range", ""));
   run("unknown_option", "--fast " + file_with("unknown_option", ""));

@@ -144,6 +144,7 @@ namespace coaxfit
     const unsigned int      max_steps;
 
     std::vector<double> force; ///< nodal contact force of the current state
+    std::vector<double> next_force; ///< force for the next Neumann step
     std::vector<double> u1, u2;
     std::vector<double> neumann_force, neumann_u1, neumann_u2;
 

@@ -1,0 +1,109 @@
+// Interface spectrum of the staggered process for one .prm case.
+//
+// Forms each body's compliance on S (the paper's K_i: nodal force -> u_r,
+// one Neumann solve per interface point with the cached factorization),
+// solves the generalized eigenproblem K1 x = lambda K2 x and prints what it
+// implies for a constant alpha: the double step (Neumann + Dirichlet)
+// contracts the error of mode lambda by
+//   N(alpha, lambda) = -(alpha sqrt(lambda) - (1 - alpha)/sqrt(lambda))^2,
+// (4.17) of the paper, so a constant alpha converges iff |N| < 1 for every
+// lambda, and the best one is alpha* = 1 / (1 + sqrt(lambda_min lambda_max)).
+//
+// Usage: coaxfit-spectrum FILE.prm [Section/Name=value]...
+
+#include <algorithm>
+#include <cmath>
+#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/input_error.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <iomanip>
+#include <iostream>
+
+int
+main(int argc, char **argv)
+{
+  using namespace coaxfit;
+  try
+    {
+      if (argc < 2)
+        throw InputError(
+          "usage: coaxfit-spectrum FILE.prm [Section/Name=value]...");
+      std::vector<std::pair<std::string, std::string>> overrides;
+      for (int i = 2; i < argc; ++i)
+        {
+          const std::string s  = argv[i];
+          const auto        eq = s.find('=');
+          if (eq == std::string::npos)
+            throw InputError("expected Section/Name=value, got " + s);
+          overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+        }
+      const Parameters p = read_parameters(argv[1], overrides);
+      Body shaft("shaft", CoaxialFit::shaft_geometry(p), p.shaft, p.degree);
+      Body hub("hub", CoaxialFit::hub_geometry(p), p.hub, p.degree);
+      for (Body *b : {&shaft, &hub})
+        {
+          b->setup_system();
+          b->assemble_system();
+        }
+      const unsigned int       n = shaft.n_interface_points();
+      LAPACKFullMatrix<double> K1(n, n), K2(n, n);
+      std::vector<double>      f(n, 0.), u;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          f.assign(n, 0.);
+          f[j] = 1.;
+          shaft.solve_neumann(f, u);
+          for (unsigned int i = 0; i < n; ++i)
+            K1(i, j) = -u[i]; // inward: compliance is positive
+          hub.solve_neumann(f, u);
+          for (unsigned int i = 0; i < n; ++i)
+            K2(i, j) = u[i];
+        }
+      std::vector<Vector<double>> vectors(n, Vector<double>(n));
+      K1.compute_generalized_eigenvalues_symmetric(K2, vectors);
+      std::vector<double> lambda(n);
+      for (unsigned int i = 0; i < n; ++i)
+        lambda[i] = K1.eigenvalue(i).real();
+      std::sort(lambda.begin(), lambda.end());
+
+      const auto rate = [&](const double a) {
+        double worst = 0.;
+        for (const double l : lambda)
+          {
+            const double s = std::sqrt(l), x = a * s - (1. - a) / s;
+            worst = std::max(worst, x * x);
+          }
+        return worst;
+      };
+      double lo = 2., hi = -1.;
+      for (unsigned int k = 1; k < 10000; ++k)
+        if (rate(k * 1e-4) < 1.)
+          {
+            lo = std::min(lo, k * 1e-4);
+            hi = std::max(hi, k * 1e-4);
+          }
+      const double best = 1. / (1. + std::sqrt(lambda.front() * lambda.back()));
+
+      std::cout << std::setprecision(4) << "case " << p.case_name << ": " << n
+                << " interface points, FE_Q(" << p.degree << "), refinement "
+                << p.global_refinements << '\n'
+                << "  eigenvalues of K1 K2^-1 in [" << lambda.front() << ", "
+                << lambda.back() << "]\n"
+                << "  best constant alpha " << best << ", contraction per "
+                << "double step " << rate(best) << '\n';
+      if (hi < lo)
+        std::cout << "  no constant alpha converges\n";
+      else
+        std::cout << "  constant alpha converges for " << lo
+                  << " <= alpha <= " << hi << '\n';
+      std::cout << "  alpha = " << p.alpha << " (Coupling/Alpha): contraction "
+                << rate(p.alpha) << (rate(p.alpha) < 1. ? "" : " (diverges)")
+                << '\n';
+      return 0;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "coaxfit-spectrum: error: " << e.what() << std::endl;
+      return 1;
+    }
+}

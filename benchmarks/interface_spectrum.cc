@@ -11,11 +11,13 @@
 //
 // Usage: coaxfit-spectrum FILE.prm [Section/Name=value]...
 
-#include <algorithm>
-#include <cmath>
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/input_error.h>
-#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 

@@ -14,7 +14,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXE = os.path.join(ROOT, "build", "coaxfit")
+EXE = os.environ.get("COAXFIT_EXE", os.path.join(ROOT, "build", "coaxfit"))
 CASES = ["lame"] + ["variant_%02d" % m for m in range(1, 19)]
 
 

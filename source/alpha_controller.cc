@@ -1,7 +1,8 @@
-#include <algorithm>
-#include <cmath>
 #include <coaxfit/alpha_controller.h>
 #include <coaxfit/input_error.h>
+
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace coaxfit

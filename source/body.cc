@@ -1,7 +1,3 @@
-#include <algorithm>
-#include <coaxfit/axisymmetric.h>
-#include <coaxfit/body.h>
-#include <coaxfit/stress_postprocessor.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -10,6 +6,12 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
+
+#include <coaxfit/axisymmetric.h>
+#include <coaxfit/body.h>
+#include <coaxfit/stress_postprocessor.h>
+
+#include <algorithm>
 #include <fstream>
 
 namespace coaxfit

@@ -1,11 +1,13 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/timer.h>
+
 #include <coaxfit/alpha_controller.h>
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/results.h>
 #include <coaxfit/staggered_coupling.h>
-#include <deal.II/base/data_out_base.h>
-#include <deal.II/base/timer.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -110,16 +112,33 @@ namespace coaxfit
   CoaxialFit::solve(std::ostream *progress)
   {
     Timer timer;
-    controller           = make_alpha_controller(parameters);
-    coupling             = std::make_unique<StaggeredCoupling>(shaft,
-                                                   hub,
-                                                   *interface,
-                                                   *controller,
-                                                   parameters.tolerance,
-                                                   parameters.max_steps);
+    controller = make_alpha_controller(parameters);
+    coupling   = std::make_unique<StaggeredCoupling>(
+      shaft,
+      hub,
+      *interface,
+      *controller,
+      parameters.tolerance,
+      parameters.max_steps,
+      UnilateralActiveSet(interface->n_points(),
+                          parameters.unilateral,
+                          active_set_mode()),
+      parameters.active_set_tolerance);
     const bool converged = coupling->run(progress);
     timing.coupling      = timer.wall_time();
     return converged;
+  }
+
+
+
+  UnilateralActiveSet::Update
+  CoaxialFit::active_set_mode() const
+  {
+    const std::string &mode = parameters.active_set_update;
+    if (mode == "every step"
+        || (mode == "auto" && parameters.alpha_controller == "fixed"))
+      return UnilateralActiveSet::Update::every_step;
+    return UnilateralActiveSet::Update::when_converged;
   }
 
 
@@ -153,15 +172,35 @@ namespace coaxfit
           << ", |dp|/p = " << coupling->traction_residual() << ")";
         warnings.push_back(w.str());
       }
-    if (pressure.min < 0.)
+    const Complementarity complementarity(*interface, *coupling);
+    if (!parameters.unilateral && pressure.min < 0.)
       {
         std::ostringstream w;
         w << std::setprecision(4)
           << "the bilateral contact pressure is tensile (min " << pressure.min
           << " MPa at z = " << pressure.z_of_min
-          << " mm): the surfaces want to separate there, which this "
-          << "bilateral solution does not allow";
+          << " mm): the surfaces want to separate there, which "
+          << "Contact/Unilateral = false does not allow";
         warnings.push_back(w.str());
+      }
+    if (parameters.unilateral)
+      {
+        const auto zones = coupling->get_active_set().separated_zones(
+          interface->z(), parameters.contact_length());
+        report << "  separated zones:";
+        if (zones.empty())
+          report << " none";
+        for (const auto &zone : zones)
+          report << " [" << std::setprecision(2) << zone.first << ", "
+                 << zone.second << "] mm";
+        report << " (" << coupling->get_active_set().n_changes()
+               << " active set changes)\n"
+               << std::scientific << std::setprecision(2)
+               << "  complementarity: max tension "
+               << complementarity.max_tension_relative << ", max penetration/d "
+               << complementarity.max_penetration_relative << ", max |p gap| "
+               << complementarity.max_pressure_gap_relative << std::fixed
+               << std::setprecision(4) << '\n';
       }
     report << "  pressure at z = 0: " << pressure.at_mid_plane
            << " MPa, mean: " << pressure.mean << " MPa, Lame: " << pressure.lame
@@ -185,10 +224,18 @@ namespace coaxfit
       {
         shaft.output_results(dir + "shaft.vtu");
         hub.output_results(dir + "hub.vtu");
-        const std::vector<std::pair<double, std::string>> records
-          = {{0., "shaft.vtu"}, {0., "hub.vtu"}};
+        write_interface_vtp(
+          dir + "interface.vtp", parameters, *interface, pressure, *coupling);
+        // One time step, three parts: ParaView shows them together.
         std::ofstream pvd(dir + "solution.pvd");
-        DataOutBase::write_pvd_record(pvd, records);
+        pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+               "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+               "<Collection>\n";
+        unsigned int part = 0;
+        for (const std::string file : {"shaft.vtu", "hub.vtu", "interface.vtp"})
+          pvd << "<DataSet timestep=\"0\" group=\"\" part=\"" << part++
+              << "\" file=\"" << file << "\"/>\n";
+        pvd << "</Collection>\n</VTKFile>\n";
       }
     timing.output = timer.wall_time();
     timing.total
@@ -201,6 +248,7 @@ namespace coaxfit
                    *coupling,
                    pressure,
                    timing,
+                   complementarity,
                    controller->name(),
                    warnings});
 

@@ -1,7 +1,6 @@
-#include <cmath>
 #include <coaxfit/contact_interface.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/vector.h>
+
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 
@@ -23,28 +22,9 @@ namespace coaxfit
         throw std::logic_error("the contact surfaces of shaft and hub do not "
                                "have matching points");
 
-    DynamicSparsityPattern dsp(n, n);
-    for (const auto &entry : shaft.interface_mass())
-      dsp.add(entry.first.first, entry.first.second);
-    sparsity.copy_from(dsp);
-    mass_matrix.reinit(sparsity);
     lumped_weights.assign(n, 0.);
     for (const auto &[ij, value] : shaft.interface_mass())
-      {
-        mass_matrix.add(ij.first, ij.second, value);
-        lumped_weights[ij.first] += value;
-      }
-    mass_solver.initialize(mass_matrix);
-  }
-
-
-
-  std::vector<double>
-  ContactInterface::pressure(const std::vector<double> &force) const
-  {
-    Vector<double> p(force.begin(), force.end());
-    mass_solver.solve(p);
-    return std::vector<double>(p.begin(), p.end());
+      lumped_weights[ij.first] += value;
   }
 
 

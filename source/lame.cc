@@ -1,5 +1,6 @@
-#include <cmath>
 #include <coaxfit/lame.h>
+
+#include <cmath>
 
 namespace coaxfit
 {
@@ -64,10 +65,11 @@ namespace coaxfit
   }
 } // namespace coaxfit
 
-#include <coaxfit/axisymmetric.h>
-#include <coaxfit/body.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+
+#include <coaxfit/axisymmetric.h>
+#include <coaxfit/body.h>
 
 namespace coaxfit
 {

@@ -1,6 +1,7 @@
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/parameters.h>
+
 #include <cstring>
 #include <iostream>
 

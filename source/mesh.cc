@@ -1,6 +1,8 @@
-#include <cmath>
-#include <coaxfit/mesh.h>
 #include <deal.II/grid/grid_generator.h>
+
+#include <coaxfit/mesh.h>
+
+#include <cmath>
 #include <numeric>
 
 namespace coaxfit

@@ -1,7 +1,9 @@
-#include <cmath>
+#include <deal.II/base/exceptions.h>
+
 #include <coaxfit/input_error.h>
 #include <coaxfit/parameters.h>
-#include <deal.II/base/exceptions.h>
+
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -258,6 +260,39 @@ namespace coaxfit
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Contact");
+    {
+      prm.declare_entry("Unilateral",
+                        "true",
+                        Patterns::Bool(),
+                        "true: the contact is unilateral as in the paper "
+                        "(1.2)-(1.3): tensile contact forces are set to zero "
+                        "and points with a gap >= 0 and no force separate. "
+                        "false: bilateral (the surfaces are held together, "
+                        "the pressure may become tensile).");
+      prm.declare_entry("Active set update",
+                        "auto",
+                        Patterns::Selection("auto|every step|when converged"),
+                        "When the contact / separated flags change. every "
+                        "step: the paper's process, tensile forces are set "
+                        "to zero in every force step and the flags are set "
+                        "after every Neumann step. when converged: the flags "
+                        "stay fixed while the coupling converges to the "
+                        "Active set tolerance, then tensile contact points "
+                        "separate and penetrating separated points close "
+                        "(primal-dual active set); accelerators (aitken, "
+                        "iqn-ils) need this. auto: every step for the fixed "
+                        "controller, when converged otherwise.");
+      prm.declare_entry("Active set tolerance",
+                        "1e-4",
+                        any_double,
+                        "In the when-converged mode the flags are updated "
+                        "once both relative mismatches are below this value "
+                        "(or Coupling/Tolerance if larger). Allowed: "
+                        "0 < tol < 1.");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     {
       prm.declare_entry("Directory",
@@ -325,6 +360,12 @@ namespace coaxfit
     iqn_filter       = prm.get_double("IQN-ILS filter");
     prm.leave_subsection();
 
+    prm.enter_subsection("Contact");
+    unilateral           = prm.get_bool("Unilateral");
+    active_set_update    = prm.get("Active set update");
+    active_set_tolerance = prm.get_double("Active set tolerance");
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     output_directory = prm.get("Directory");
     write_vtu        = prm.get_bool("Write vtu");
@@ -353,7 +394,8 @@ namespace coaxfit
          {"Coupling/Tolerance", tolerance},
          {"Coupling/Beta", beta},
          {"Coupling/Aitken initial omega", aitken_omega},
-         {"Coupling/IQN-ILS filter", iqn_filter}};
+         {"Coupling/IQN-ILS filter", iqn_filter},
+         {"Contact/Active set tolerance", active_set_tolerance}};
     for (const auto &[name, value] : values)
       require(std::isfinite(value), name, value, "a finite number");
 
@@ -387,6 +429,10 @@ namespace coaxfit
             "Coupling/IQN-ILS filter",
             iqn_filter,
             "0 <= filter < 1");
+    require(active_set_tolerance > 0. && active_set_tolerance < 1.,
+            "Contact/Active set tolerance",
+            active_set_tolerance,
+            "0 < tol < 1");
     require(tolerance >= 1e-14 && tolerance < 1.,
             "Coupling/Tolerance",
             tolerance,

@@ -1,6 +1,7 @@
-#include <algorithm>
 #include <coaxfit/lame.h>
 #include <coaxfit/results.h>
+
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -39,7 +40,7 @@ namespace coaxfit
   PressureSummary::PressureSummary(const Parameters          &parameters,
                                    const ContactInterface    &interface,
                                    const std::vector<double> &force)
-    : pressure(interface.pressure(force))
+    : pressure(interface.lumped_pressure(force))
     , at_mid_plane(pressure.front())
     , mean(interface.mean_pressure(force))
     , lame(lame_pressure(parameters.R0,
@@ -58,6 +59,81 @@ namespace coaxfit
 
 
 
+  Complementarity::Complementarity(const ContactInterface  &interface,
+                                   const StaggeredCoupling &coupling)
+    : max_tension_relative(0.)
+    , max_penetration_relative(0.)
+    , max_pressure_gap_relative(0.)
+  {
+    const std::vector<double> p
+      = interface.lumped_pressure(coupling.contact_force());
+    const double d     = interface.interference();
+    double       p_max = 0.;
+    for (const double x : p)
+      p_max = std::max(p_max, std::abs(x));
+    if (p_max == 0.)
+      p_max = 1.;
+    for (unsigned int i = 0; i < p.size(); ++i)
+      {
+        const double gap     = coupling.u_hub()[i] - coupling.u_shaft()[i] - d;
+        max_tension_relative = std::max(max_tension_relative, -p[i] / p_max);
+        max_penetration_relative = std::max(max_penetration_relative, -gap / d);
+        max_pressure_gap_relative
+          = std::max(max_pressure_gap_relative,
+                     std::abs(p[i] * gap) / (p_max * d));
+      }
+  }
+
+
+
+  void
+  write_interface_vtp(const std::string       &filename,
+                      const Parameters        &parameters,
+                      const ContactInterface  &interface,
+                      const PressureSummary   &pressure,
+                      const StaggeredCoupling &coupling)
+  {
+    std::ofstream      out   = open(filename);
+    const unsigned int n     = interface.n_points();
+    const auto         array = [&](const std::string &name, auto value) {
+      out << "<DataArray type=\"Float64\" Name=\"" << name
+          << "\" format=\"ascii\">\n";
+      for (unsigned int i = 0; i < n; ++i)
+        out << value(i) << (i + 1 < n ? ' ' : '\n');
+      out << "</DataArray>\n";
+    };
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"PolyData\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n<PolyData>\n"
+        << "<Piece NumberOfPoints=\"" << n
+        << "\" NumberOfVerts=\"0\" NumberOfLines=\"1\" "
+           "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+        << "<PointData Scalars=\"contact_pressure\">\n";
+    array("contact_pressure",
+          [&](unsigned int i) { return pressure.pressure[i]; });
+    array("gap", [&](unsigned int i) {
+      return coupling.u_hub()[i] - coupling.u_shaft()[i]
+             - interface.interference();
+    });
+    array("contact_status", [&](unsigned int i) {
+      return coupling.get_active_set().in_contact()[i] ? 1. : 0.;
+    });
+    out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n; ++i)
+      out << parameters.R1 << ' ' << interface.z()[i] << " 0\n";
+    out << "</DataArray>\n</Points>\n<Lines>\n"
+        << "<DataArray type=\"Int32\" Name=\"connectivity\" "
+           "format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n; ++i)
+      out << i << (i + 1 < n ? ' ' : '\n');
+    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
+           "format=\"ascii\">\n"
+        << n << "\n</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  }
+
+
+
   void
   write_contact_pressure(const std::string       &filename,
                          const ContactInterface  &interface,
@@ -71,7 +147,8 @@ namespace coaxfit
           << coupling.u_shaft()[i] << ',' << coupling.u_hub()[i] << ','
           << coupling.u_hub()[i] - coupling.u_shaft()[i]
                - interface.interference()
-          << ",contact\n";
+          << (coupling.get_active_set().in_contact()[i] ? ",contact\n" :
+                                                          ",separated\n");
   }
 
 
@@ -139,6 +216,33 @@ namespace coaxfit
         << ", \"z_of_min\": " << ps.z_of_min << ", \"max\": " << ps.max
         << ", \"z_of_max\": " << ps.z_of_max << ", \"lame\": " << ps.lame
         << ", \"tensile\": " << (ps.min < 0. ? "true" : "false") << "},\n";
+
+    const UnilateralActiveSet &set = data.coupling.get_active_set();
+    const auto                 zones
+      = set.separated_zones(data.interface.z(), p.contact_length());
+    double separated = 0.;
+    for (const auto &zone : zones)
+      separated += zone.second - zone.first;
+    out << "  \"contact\": {\"unilateral\": "
+        << (set.enabled() ? "true" : "false") << ", \"active_set_update\": "
+        << (set.update_mode() == UnilateralActiveSet::Update::every_step ?
+              "\"every step\"" :
+              "\"when converged\"")
+        << ", \"contact_length\": " << p.contact_length() - separated
+        << ", \"separated_length\": " << separated
+        << ", \"separated_points\": " << set.n_separated()
+        << ", \"separated_zones\": [";
+    for (unsigned int i = 0; i < zones.size(); ++i)
+      out << (i ? ", " : "") << "[" << zones[i].first << ", " << zones[i].second
+          << "]";
+    out << "]},\n";
+    out << "  \"active_set\": {\"changes\": " << set.n_changes() << "},\n";
+    out << "  \"complementarity\": {\"max_tension_relative\": "
+        << data.complementarity.max_tension_relative
+        << ", \"max_penetration_relative\": "
+        << data.complementarity.max_penetration_relative
+        << ", \"max_pressure_gap_relative\": "
+        << data.complementarity.max_pressure_gap_relative << "},\n";
 
     out << "  \"solver\": {\"factorizations\": {\"shaft\": "
         << data.shaft.n_factorizations()

@@ -1,8 +1,10 @@
-#include <algorithm>
-#include <cmath>
+#include <deal.II/base/thread_management.h>
+
 #include <coaxfit/input_error.h>
 #include <coaxfit/staggered_coupling.h>
-#include <deal.II/base/thread_management.h>
+
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -24,12 +26,14 @@ namespace coaxfit
 
 
 
-  StaggeredCoupling::StaggeredCoupling(Body                   &shaft,
-                                       Body                   &hub,
-                                       const ContactInterface &interface,
-                                       AlphaController        &controller,
-                                       const double            tolerance,
-                                       const unsigned int      max_steps)
+  StaggeredCoupling::StaggeredCoupling(Body                      &shaft,
+                                       Body                      &hub,
+                                       const ContactInterface    &interface,
+                                       AlphaController           &controller,
+                                       const double               tolerance,
+                                       const unsigned int         max_steps,
+                                       const UnilateralActiveSet &active_set,
+                                       const double active_set_tolerance)
     : shaft(shaft)
     , hub(hub)
     , interface(interface)
@@ -38,7 +42,28 @@ namespace coaxfit
     , max_steps(max_steps)
     , last_displacement_mismatch(std::numeric_limits<double>::infinity())
     , last_traction_mismatch(std::numeric_limits<double>::infinity())
+    , active_set(active_set)
+    , active_set_tolerance(std::max(active_set_tolerance, tolerance))
   {}
+
+
+
+  double
+  StaggeredCoupling::relative_gap_residual() const
+  {
+    // In contact (f > 0) the gap must vanish; where the surfaces carry no
+    // force they may open (gap >= 0) but must not penetrate.
+    const double             d        = interface.interference();
+    const std::vector<bool> &contact  = active_set.in_contact();
+    double                   mismatch = 0.;
+    for (unsigned int i = 0; i < u1.size(); ++i)
+      {
+        const double gap = u2[i] - u1[i] - d;
+        mismatch = std::max(mismatch, contact[i] ? std::abs(gap) : -gap);
+      }
+    const double r = mismatch / d;
+    return std::isfinite(r) ? r : std::numeric_limits<double>::quiet_NaN();
+  }
 
 
 
@@ -49,13 +74,31 @@ namespace coaxfit
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
 
-    const double d        = interface.interference();
-    double       mismatch = 0.;
-    for (unsigned int i = 0; i < force.size(); ++i)
-      mismatch = std::max(mismatch, std::abs(u2[i] - u1[i] - d));
-    last_displacement_mismatch = mismatch / d;
-    if (!std::isfinite(last_displacement_mismatch))
-      last_displacement_mismatch = std::numeric_limits<double>::quiet_NaN();
+    // The paper updates the flags after every Neumann step; the outer
+    // (primal-dual) mode once the iteration has converged for the current
+    // set to the active-set tolerance.
+    active_set_changed  = false;
+    active_set_verified = false;
+    if (active_set.update_mode() == UnilateralActiveSet::Update::every_step
+        || (relative_gap_residual() < active_set_tolerance
+            && last_traction_mismatch < active_set_tolerance))
+      {
+        std::vector<double> gap(force.size());
+        for (unsigned int i = 0; i < force.size(); ++i)
+          gap[i] = u2[i] - u1[i] - interface.interference();
+        active_set_changed  = active_set.update(force, gap);
+        active_set_verified = !active_set_changed;
+        if (active_set_changed)
+          {
+            controller.restart();
+            // Each outer update starts a new inner iteration; in the
+            // paper's every-step mode changes are part of the iteration.
+            if (active_set.update_mode() ==
+                UnilateralActiveSet::Update::when_converged)
+              last_change_step = history_rows.size() + 1;
+          }
+      }
+    last_displacement_mismatch = relative_gap_residual();
 
     neumann_force = force;
     neumann_u1    = u1;
@@ -64,7 +107,8 @@ namespace coaxfit
                             true,
                             controller.representative_alpha(),
                             last_displacement_mismatch,
-                            0.});
+                            0.,
+                            active_set.n_separated()});
   }
 
 
@@ -72,42 +116,49 @@ namespace coaxfit
   void
   StaggeredCoupling::dirichlet_step()
   {
-    const unsigned int  n = force.size();
-    const double        d = interface.interference();
-    std::vector<double> u_shaft(n), u_hub(n), f1, f2;
+    const unsigned int       n       = force.size();
+    const double             d       = interface.interference();
+    const std::vector<bool> &contact = active_set.in_contact();
+    std::vector<double>      u_shaft(n), u_hub(n), zero(n, 0.), f1, f2;
     for (unsigned int i = 0; i < n; ++i)
       {
         u_shaft[i] = u1[i] + (1. - controller.alpha(i)) * (u2[i] - d - u1[i]);
         u_hub[i]   = u_shaft[i] + d;
       }
-    concurrently([&]() { shaft.solve_dirichlet(u_shaft, f1); },
-                 [&]() { hub.solve_dirichlet(u_hub, f2); });
+    // Contact points get the blended displacement, separated points stay
+    // traction free in both bodies.
+    concurrently([&]() { shaft.solve(contact, u_shaft, zero, u1, f1); },
+                 [&]() { hub.solve(contact, u_hub, zero, u2, f2); });
 
-    const std::vector<double> &w         = interface.weights();
-    double                     mismatch  = 0.;
-    double                     magnitude = 0.;
+    const std::vector<double> &w        = interface.weights();
+    double                     mismatch = 0., tension = 0., magnitude = 0.;
     for (unsigned int i = 0; i < n; ++i)
       {
-        mismatch  = std::max(mismatch, std::abs(f2[i] - f1[i]) / w[i]);
+        force[i] = f1[i] + controller.alpha(i) * (f2[i] - f1[i]);
+        mismatch = std::max(mismatch, std::abs(f2[i] - f1[i]) / w[i]);
+        if (active_set.enabled()
+            && active_set.update_mode()
+                 == UnilateralActiveSet::Update::every_step)
+          tension = std::max(tension, -force[i] / w[i]);
         magnitude = std::max(
           {magnitude, std::abs(f1[i]) / w[i], std::abs(f2[i]) / w[i]});
       }
-    last_traction_mismatch = mismatch / magnitude;
+    // A tensile blend is a violated contact condition: part of the residual.
+    last_traction_mismatch = std::max(mismatch, tension) / magnitude;
     if (!std::isfinite(last_traction_mismatch))
       last_traction_mismatch = std::numeric_limits<double>::quiet_NaN();
 
-    u1 = u_shaft;
-    u2 = u_hub;
-    for (unsigned int i = 0; i < n; ++i)
-      force[i] = f1[i] + controller.alpha(i) * (f2[i] - f1[i]);
+    active_set.clamp(force);
     next_force = force;
     controller.accelerate(neumann_force, next_force);
+    active_set.clamp(next_force);
 
     history_rows.push_back({static_cast<unsigned int>(history_rows.size() + 1),
                             false,
                             controller.representative_alpha(),
-                            0.,
-                            last_traction_mismatch});
+                            relative_gap_residual(),
+                            last_traction_mismatch,
+                            active_set.n_separated()});
   }
 
 
@@ -184,15 +235,41 @@ namespace coaxfit
             reason = s.str();
           }
       }
+    // A stall: since the last active set change the iteration ran 60 steps
+    // and the best mismatch of the last 30 is no better than before them.
+    const unsigned int stall_window = 30;
+    if (reason.empty() && last.step >= last_change_step + 2 * stall_window)
+      {
+        const auto level = [](const CouplingStep &s) {
+          return std::max(s.displacement_mismatch, s.traction_mismatch);
+        };
+        double recent = std::numeric_limits<double>::infinity();
+        double before = std::numeric_limits<double>::infinity();
+        for (const CouplingStep &s : history_rows)
+          if (s.step > last_change_step)
+            (s.step + stall_window > last.step ? recent : before) =
+              std::min(s.step + stall_window > last.step ? recent : before,
+                       level(s));
+        if (recent >= before)
+          {
+            std::ostringstream s;
+            s << std::setprecision(3) << "the iteration stalls: no progress "
+              << "in the last " << stall_window
+              << " steps (best mismatch " << before << ")";
+            reason = s.str();
+          }
+      }
     if (reason.empty())
       return;
 
     std::ostringstream msg;
-    msg << "the coupling iteration diverged at step " << last.step
+    msg << "the coupling iteration failed at step " << last.step
         << " with Coupling/Alpha controller = " << controller.name()
         << ", alpha = " << std::setprecision(4)
         << controller.representative_alpha() << ": " << reason << "; "
-        << suggested_alpha_range() << '.';
+        << suggested_alpha_range()
+        << " (a Winkler estimate; thin walls can leave no convergent "
+        << "constant alpha: then use Coupling/Alpha controller = iqn-ils).";
     throw SolverError(msg.str());
   }
 
@@ -212,7 +289,8 @@ namespace coaxfit
     last_traction_mismatch     = std::numeric_limits<double>::infinity();
 
     if (progress)
-      *progress << "  step  kind       alpha   |du|/d      |dp|/p\n";
+      *progress << "  step  kind       alpha   |du|/d      |dp|/p"
+                << (active_set.enabled() ? "      separated" : "") << '\n';
 
     while (history_rows.size() < max_steps)
       {
@@ -237,10 +315,12 @@ namespace coaxfit
               line << s.displacement_mismatch << "   -";
             else
               line << "-           " << s.traction_mismatch;
+            if (active_set.enabled())
+              line << "   " << std::setw(4) << s.n_separated;
             *progress << line.str() << std::endl;
           }
         if (last_displacement_mismatch < tolerance
-            && last_traction_mismatch < tolerance)
+            && last_traction_mismatch < tolerance && active_set_verified)
           {
             has_converged = true;
             break;

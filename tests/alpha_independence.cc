@@ -4,6 +4,7 @@
 // interface point to the coupling tolerance.
 
 #include <coaxfit/coaxial_fit.h>
+
 #include <iomanip>
 #include <iostream>
 

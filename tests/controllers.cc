@@ -9,6 +9,7 @@
 
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/input_error.h>
+
 #include <iomanip>
 #include <iostream>
 

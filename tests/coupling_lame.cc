@@ -5,6 +5,7 @@
 // the paper's material and for two different materials.
 
 #include <coaxfit/coaxial_fit.h>
+
 #include <iomanip>
 #include <iostream>
 

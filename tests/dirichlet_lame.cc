@@ -6,9 +6,9 @@
 // The pressure at each point is the nodal reaction over its lumped weight.
 // Hollow: converges with the mesh; solid: exact (linear field).
 
-#include "test_bodies.h"
-
 #include <coaxfit/lame.h>
+
+#include "test_bodies.h"
 
 namespace
 {

@@ -5,9 +5,9 @@
 // r-weighted L2 norm it must fall as h^(p+1) for the displacement and h^p
 // for the hoop stress.
 
-#include "test_bodies.h"
-
 #include <coaxfit/lame.h>
+
+#include "test_bodies.h"
 
 int
 main()

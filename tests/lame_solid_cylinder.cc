@@ -6,9 +6,9 @@
 // condition u_r = 0 and the consistent surface load), for several
 // materials including a nearly incompressible one.
 
-#include "test_bodies.h"
-
 #include <coaxfit/lame.h>
+
+#include "test_bodies.h"
 
 int
 main()

@@ -4,8 +4,9 @@
 #ifndef coaxfit_tests_test_bodies_h
 #define coaxfit_tests_test_bodies_h
 
-#include <cmath>
 #include <coaxfit/body.h>
+
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <vector>

@@ -5,6 +5,7 @@
 // 0 <= z <= 100 mm 191.55 MPa, p(99 mm) = 322.3 MPa) within 1 %.
 
 #include <coaxfit/coaxial_fit.h>
+
 #include <iomanip>
 #include <iostream>
 

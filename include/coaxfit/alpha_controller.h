@@ -2,6 +2,7 @@
 #define coaxfit_alpha_controller_h
 
 #include <coaxfit/parameters.h>
+
 #include <memory>
 #include <string>
 #include <vector>

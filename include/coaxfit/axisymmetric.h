@@ -1,10 +1,12 @@
 #ifndef coaxfit_axisymmetric_h
 #define coaxfit_axisymmetric_h
 
+#include <deal.II/base/tensor.h>
+
+#include <coaxfit/parameters.h>
+
 #include <array>
 #include <cmath>
-#include <coaxfit/parameters.h>
-#include <deal.II/base/tensor.h>
 
 namespace coaxfit
 {

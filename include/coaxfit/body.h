@@ -1,8 +1,6 @@
 #ifndef coaxfit_body_h
 #define coaxfit_body_h
 
-#include <coaxfit/mesh.h>
-#include <coaxfit/parameters.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -12,6 +10,10 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+
+#include <coaxfit/mesh.h>
+#include <coaxfit/parameters.h>
+
 #include <deque>
 #include <map>
 #include <memory>

@@ -7,6 +7,7 @@
 #include <coaxfit/parameters.h>
 #include <coaxfit/results.h>
 #include <coaxfit/staggered_coupling.h>
+
 #include <memory>
 #include <ostream>
 
@@ -72,6 +73,10 @@ namespace coaxfit
     hub_geometry(const Parameters &parameters);
 
   private:
+    /** The active set update mode selected by Contact/Active set update. */
+    UnilateralActiveSet::Update
+    active_set_mode() const;
+
     const Parameters                   parameters;
     Body                               shaft;
     Body                               hub;

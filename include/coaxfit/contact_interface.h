@@ -1,10 +1,12 @@
 #ifndef coaxfit_contact_interface_h
 #define coaxfit_contact_interface_h
 
-#include <coaxfit/body.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+
+#include <coaxfit/body.h>
+
 #include <vector>
 
 namespace coaxfit
@@ -13,9 +15,8 @@ namespace coaxfit
    * The contact surface S as both bodies see it: the ordered points shared
    * by the shaft D1 and the hub D2 (their meshes match on S, so point i of
    * one body is point i of the other), the interference d, the lumped
-   * weights w_i = int_S N_i r dz that turn a nodal force into a pressure,
-   * and the interface mass matrix M_ij = int_S N_i N_j r dz for the
-   * consistent pressure p = M^{-1} F.
+   * weights w_i = int_S N_i r dz (row sums of the interface mass matrix)
+   * that turn a nodal force into a pressure.
    */
   class ContactInterface
   {
@@ -53,14 +54,6 @@ namespace coaxfit
       return d;
     }
 
-    /**
-     * Pressure (MPa, compression positive) at each point from nodal contact
-     * forces: the solution of M p = F, exact for any pressure in the FE
-     * space on S.
-     */
-    std::vector<double>
-    pressure(const std::vector<double> &force) const;
-
     /** Pressure from nodal forces with the lumped weights: F_i / w_i. */
     std::vector<double>
     lumped_pressure(const std::vector<double> &force) const;
@@ -73,12 +66,9 @@ namespace coaxfit
     mean_pressure(const std::vector<double> &force) const;
 
   private:
-    double               d;
-    std::vector<double>  z_coordinates;
-    std::vector<double>  lumped_weights;
-    SparsityPattern      sparsity;
-    SparseMatrix<double> mass_matrix;
-    SparseDirectUMFPACK  mass_solver;
+    double              d;
+    std::vector<double> z_coordinates;
+    std::vector<double> lumped_weights;
   };
 } // namespace coaxfit
 

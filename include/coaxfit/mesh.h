@@ -2,6 +2,7 @@
 #define coaxfit_mesh_h
 
 #include <deal.II/grid/tria.h>
+
 #include <vector>
 
 namespace coaxfit

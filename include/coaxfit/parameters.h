@@ -2,6 +2,7 @@
 #define coaxfit_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,13 @@ namespace coaxfit
     unsigned int iqn_columns      = 50;    ///< IQN-ILS history length
     double       iqn_filter       = 1e-10; ///< IQN-ILS QR filter
     /** @} */
+
+    /** Unilateral contact: the surfaces may separate (Contact/Unilateral). */
+    bool unilateral = true;
+    /** Contact/Active set update: auto, every step or when converged. */
+    std::string active_set_update = "auto";
+    /** Contact/Active set tolerance: inner convergence before an update. */
+    double active_set_tolerance = 1e-4;
 
     /** @name Output */
     /** @{ */

@@ -1,9 +1,11 @@
 #ifndef coaxfit_staggered_coupling_h
 #define coaxfit_staggered_coupling_h
 
+#include <coaxfit/active_set.h>
 #include <coaxfit/alpha_controller.h>
 #include <coaxfit/body.h>
 #include <coaxfit/contact_interface.h>
+
 #include <ostream>
 #include <vector>
 
@@ -25,6 +27,8 @@ namespace coaxfit
      * state after this step (zero by construction after a Neumann step).
      */
     double traction_mismatch;
+    /** Number of separated interface points after this step. */
+    unsigned int n_separated;
   };
 
   /**
@@ -38,20 +42,25 @@ namespace coaxfit
    * u = u1 + (1 - alpha)(u2 - d - u1) to the shaft and u + d to the hub and
    * returns the reactions F1, F2; the next Neumann step applies
    * F = F1 + alpha (F2 - F1). Both bodies are solved concurrently in every
+   * step. With the unilateral pass (UnilateralActiveSet) tensile forces are
+   * set to zero and separated points stay traction free in the Dirichlet
    * step. The iteration has converged when the latest displacement mismatch
-   * and the latest traction mismatch are both below the tolerance. A growing
-   * or non-finite residual stops it with a SolverError that names alpha and
-   * suggests a range.
+   * and the latest traction mismatch are both below the tolerance and the
+   * active set was checked in the last Neumann step and did not change. A
+   * growing, stalling or non-finite residual stops it with a SolverError
+   * that names alpha and suggests a range.
    */
   class StaggeredCoupling
   {
   public:
-    StaggeredCoupling(Body                   &shaft,
-                      Body                   &hub,
-                      const ContactInterface &interface,
-                      AlphaController        &controller,
-                      double                  tolerance,
-                      unsigned int            max_steps);
+    StaggeredCoupling(Body                      &shaft,
+                      Body                      &hub,
+                      const ContactInterface    &interface,
+                      AlphaController           &controller,
+                      double                     tolerance,
+                      unsigned int               max_steps,
+                      const UnilateralActiveSet &active_set,
+                      double                     active_set_tolerance);
 
     /**
      * Run the process; print one line per step to @p progress if not null.
@@ -121,7 +130,21 @@ namespace coaxfit
       return last_traction_mismatch;
     }
 
+    /** The contact / separated flags of the interface points. */
+    const UnilateralActiveSet &
+    get_active_set() const
+    {
+      return active_set;
+    }
+
   private:
+    /**
+     * Relative displacement residual of the current state: |gap| where in
+     * contact, penetration where separated.
+     */
+    double
+    relative_gap_residual() const;
+
     void
     neumann_step();
 
@@ -152,6 +175,11 @@ namespace coaxfit
     double                    last_displacement_mismatch;
     double                    last_traction_mismatch;
     bool                      has_converged = false;
+    UnilateralActiveSet       active_set;
+    const double              active_set_tolerance;
+    bool                      active_set_changed  = false;
+    bool                      active_set_verified = false;
+    unsigned int              last_change_step    = 0;
   };
 } // namespace coaxfit
 

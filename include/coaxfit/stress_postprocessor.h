@@ -1,8 +1,9 @@
 #ifndef coaxfit_stress_postprocessor_h
 #define coaxfit_stress_postprocessor_h
 
-#include <coaxfit/parameters.h>
 #include <deal.II/numerics/data_postprocessor.h>
+
+#include <coaxfit/parameters.h>
 
 namespace coaxfit
 {

@@ -1,0 +1,30 @@
+#!/usr/bin/env python3
+"""Steps and wall time to the tolerance 1e-8 for every variant and every
+alpha controller, default settings otherwise (shipped mesh, unilateral
+contact). Writes controller_benchmark.csv and prints a markdown table.
+Usage: python3 benchmarks/controller_benchmark.py"""
+import csv
+import os
+
+from coaxfit_run import CASES, ROOT, run
+
+CONTROLLERS = ["fixed", "winkler", "pointwise", "aitken", "iqn-ils"]
+rows = []
+for case in CASES:
+    row = [case]
+    for c in CONTROLLERS:
+        s, code, err = run(case, ["Coupling/Alpha controller=" + c])
+        if s is not None and s["converged"]:
+            row.append("%d / %.2f s" % (s["iterations"], s["timing"]["coupling"]))
+        else:
+            row.append("fails")
+    rows.append(row)
+    print(row, flush=True)
+with open(os.path.join(ROOT, "benchmarks", "controller_benchmark.csv"), "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow(["case"] + CONTROLLERS)
+    w.writerows(rows)
+print("\n| variant | " + " | ".join(CONTROLLERS) + " |")
+print("|---" * (len(CONTROLLERS) + 1) + "|")
+for r in rows:
+    print("| " + " | ".join(r) + " |")

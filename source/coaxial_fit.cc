@@ -92,7 +92,9 @@ namespace coaxfit
     timing.setup = timer.wall_time();
 
     // Both constraint sets of the bilateral process, factorized up front
-    // and concurrently.
+    // and concurrently (the monolithic solver factorizes its own system).
+    if (parameters.solver_method == "monolithic")
+      return;
     timer.restart();
     const std::vector<bool> none(interface->n_points(), false);
     const std::vector<bool> all(interface->n_points(), true);
@@ -113,7 +115,21 @@ namespace coaxfit
   {
     Timer timer;
     controller = make_alpha_controller(parameters);
-    coupling   = std::make_unique<StaggeredCoupling>(
+    if (parameters.solver_method == "monolithic")
+      {
+        coupling = std::make_unique<MonolithicSolver>(
+          shaft,
+          hub,
+          *interface,
+          UnilateralActiveSet(interface->n_points(),
+                              parameters.unilateral,
+                              UnilateralActiveSet::Update::when_converged),
+          parameters.max_steps);
+        const bool converged = coupling->run(progress);
+        timing.coupling      = timer.wall_time();
+        return converged;
+      }
+    coupling = std::make_unique<StaggeredCoupling>(
       shaft,
       hub,
       *interface,
@@ -249,7 +265,9 @@ namespace coaxfit
                    pressure,
                    timing,
                    complementarity,
-                   controller->name(),
+                   parameters.solver_method == "monolithic" ?
+                     std::string("monolithic") :
+                     controller->name(),
                    warnings});
 
     out << "  results in " << parameters.output_directory << '\n';

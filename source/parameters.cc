@@ -193,6 +193,21 @@ namespace coaxfit
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Method",
+                        "staggered",
+                        Patterns::Selection("staggered|monolithic"),
+                        "staggered: the principle of alternating continuity "
+                        "(each body solved on its own, Dirichlet and "
+                        "Neumann steps alternating). monolithic: the "
+                        "reference, both bodies in one system with the "
+                        "contact points tied and a primal-dual active set "
+                        "for separation; the Coupling settings are not "
+                        "used.");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Coupling");
     {
       prm.declare_entry("Alpha",
@@ -347,6 +362,10 @@ namespace coaxfit
     grading_ratio      = prm.get_double("Grading ratio");
     global_refinements = prm.get_integer("Global refinements");
     degree             = prm.get_integer("Degree");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    solver_method = prm.get("Method");
     prm.leave_subsection();
 
     prm.enter_subsection("Coupling");

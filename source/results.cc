@@ -1,4 +1,5 @@
 #include <coaxfit/lame.h>
+#include <coaxfit/monolithic_solver.h>
 #include <coaxfit/results.h>
 
 #include <algorithm>
@@ -59,8 +60,8 @@ namespace coaxfit
 
 
 
-  Complementarity::Complementarity(const ContactInterface  &interface,
-                                   const StaggeredCoupling &coupling)
+  Complementarity::Complementarity(const ContactInterface &interface,
+                                   const InterfaceSolver  &coupling)
     : max_tension_relative(0.)
     , max_penetration_relative(0.)
     , max_pressure_gap_relative(0.)
@@ -87,11 +88,11 @@ namespace coaxfit
 
 
   void
-  write_interface_vtp(const std::string       &filename,
-                      const Parameters        &parameters,
-                      const ContactInterface  &interface,
-                      const PressureSummary   &pressure,
-                      const StaggeredCoupling &coupling)
+  write_interface_vtp(const std::string      &filename,
+                      const Parameters       &parameters,
+                      const ContactInterface &interface,
+                      const PressureSummary  &pressure,
+                      const InterfaceSolver  &coupling)
   {
     std::ofstream      out   = open(filename);
     const unsigned int n     = interface.n_points();
@@ -135,10 +136,10 @@ namespace coaxfit
 
 
   void
-  write_contact_pressure(const std::string       &filename,
-                         const ContactInterface  &interface,
-                         const PressureSummary   &pressure,
-                         const StaggeredCoupling &coupling)
+  write_contact_pressure(const std::string      &filename,
+                         const ContactInterface &interface,
+                         const PressureSummary  &pressure,
+                         const InterfaceSolver  &coupling)
   {
     std::ofstream out = open(filename);
     out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n";
@@ -154,8 +155,8 @@ namespace coaxfit
 
 
   void
-  write_convergence(const std::string       &filename,
-                    const StaggeredCoupling &coupling)
+  write_convergence(const std::string     &filename,
+                    const InterfaceSolver &coupling)
   {
     std::ofstream out = open(filename);
     out << "step,kind,alpha,displacement_mismatch_relative,"
@@ -244,8 +245,13 @@ namespace coaxfit
         << ", \"max_pressure_gap_relative\": "
         << data.complementarity.max_pressure_gap_relative << "},\n";
 
-    out << "  \"solver\": {\"factorizations\": {\"shaft\": "
-        << data.shaft.n_factorizations()
+    const auto *monolithic
+      = dynamic_cast<const MonolithicSolver *>(&data.coupling);
+    out << "  \"solver\": {\"method\": "
+        << (monolithic ? "\"monolithic\"" : "\"staggered\"")
+        << ", \"factorizations\": {\"coupled\": "
+        << (monolithic ? monolithic->n_factorizations() : 0)
+        << ", \"shaft\": " << data.shaft.n_factorizations()
         << ", \"hub\": " << data.hub.n_factorizations()
         << "}, \"solves\": {\"shaft\": " << data.shaft.n_solves()
         << ", \"hub\": " << data.hub.n_solves() << "}},\n";

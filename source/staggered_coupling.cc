@@ -34,15 +34,13 @@ namespace coaxfit
                                        const unsigned int         max_steps,
                                        const UnilateralActiveSet &active_set,
                                        const double active_set_tolerance)
-    : shaft(shaft)
+    : InterfaceSolver(active_set)
+    , shaft(shaft)
     , hub(hub)
     , interface(interface)
     , controller(controller)
     , tolerance(tolerance)
     , max_steps(max_steps)
-    , last_displacement_mismatch(std::numeric_limits<double>::infinity())
-    , last_traction_mismatch(std::numeric_limits<double>::infinity())
-    , active_set(active_set)
     , active_set_tolerance(std::max(active_set_tolerance, tolerance))
   {}
 
@@ -93,8 +91,8 @@ namespace coaxfit
             controller.restart();
             // Each outer update starts a new inner iteration; in the
             // paper's every-step mode changes are part of the iteration.
-            if (active_set.update_mode() ==
-                UnilateralActiveSet::Update::when_converged)
+            if (active_set.update_mode()
+                == UnilateralActiveSet::Update::when_converged)
               last_change_step = history_rows.size() + 1;
           }
       }
@@ -247,15 +245,15 @@ namespace coaxfit
         double before = std::numeric_limits<double>::infinity();
         for (const CouplingStep &s : history_rows)
           if (s.step > last_change_step)
-            (s.step + stall_window > last.step ? recent : before) =
-              std::min(s.step + stall_window > last.step ? recent : before,
-                       level(s));
+            (s.step + stall_window > last.step ? recent : before)
+              = std::min(s.step + stall_window > last.step ? recent : before,
+                         level(s));
         if (recent >= before)
           {
             std::ostringstream s;
             s << std::setprecision(3) << "the iteration stalls: no progress "
-              << "in the last " << stall_window
-              << " steps (best mismatch " << before << ")";
+              << "in the last " << stall_window << " steps (best mismatch "
+              << before << ")";
             reason = s.str();
           }
       }
@@ -332,13 +330,4 @@ namespace coaxfit
 
 
 
-  unsigned int
-  StaggeredCoupling::steps_to_displacement_mismatch(
-    const double criterion) const
-  {
-    for (const CouplingStep &s : history_rows)
-      if (s.neumann && s.displacement_mismatch < criterion)
-        return s.step;
-    return 0;
-  }
 } // namespace coaxfit

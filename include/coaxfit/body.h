@@ -153,6 +153,28 @@ namespace coaxfit
       return solution;
     }
 
+    /** Replace the solution (a solver that owns the system, e.g. the
+     * monolithic one, hands its answer back for output). */
+    void
+    set_solution(const Vector<double> &new_solution)
+    {
+      solution = new_solution;
+    }
+
+    /** The assembled stiffness matrix (homogeneous conditions applied). */
+    const SparseMatrix<double> &
+    get_stiffness_matrix() const
+    {
+      return stiffness_matrix;
+    }
+
+    /** The DoF of u_r at each interface point. */
+    const std::vector<types::global_dof_index> &
+    get_interface_dofs() const
+    {
+      return interface_dofs;
+    }
+
     unsigned int
     n_dofs() const
     {

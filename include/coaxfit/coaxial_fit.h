@@ -4,6 +4,7 @@
 #include <coaxfit/alpha_controller.h>
 #include <coaxfit/body.h>
 #include <coaxfit/contact_interface.h>
+#include <coaxfit/monolithic_solver.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/results.h>
 #include <coaxfit/staggered_coupling.h>
@@ -47,7 +48,7 @@ namespace coaxfit
     output_results(std::ostream &out);
 
     /** The coupling (after solve()). */
-    const StaggeredCoupling &
+    const InterfaceSolver &
     get_coupling() const
     {
       return *coupling;
@@ -77,13 +78,13 @@ namespace coaxfit
     UnilateralActiveSet::Update
     active_set_mode() const;
 
-    const Parameters                   parameters;
-    Body                               shaft;
-    Body                               hub;
-    std::unique_ptr<ContactInterface>  interface;
-    std::unique_ptr<AlphaController>   controller;
-    std::unique_ptr<StaggeredCoupling> coupling;
-    Timing                             timing;
+    const Parameters                  parameters;
+    Body                              shaft;
+    Body                              hub;
+    std::unique_ptr<ContactInterface> interface;
+    std::unique_ptr<AlphaController>  controller;
+    std::unique_ptr<InterfaceSolver>  coupling;
+    Timing                            timing;
   };
 } // namespace coaxfit
 

@@ -69,6 +69,9 @@ namespace coaxfit
     unsigned int degree             = 2;
     /** @} */
 
+    /** Solver/Method: staggered (the paper's) or monolithic (reference). */
+    std::string solver_method = "staggered";
+
     /** @name Coupling */
     /** @{ */
     double       alpha            = 0.8;

@@ -2,6 +2,7 @@
 #define coaxfit_results_h
 
 #include <coaxfit/contact_interface.h>
+#include <coaxfit/interface_solver.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/staggered_coupling.h>
 
@@ -59,32 +60,32 @@ namespace coaxfit
     double max_penetration_relative;
     double max_pressure_gap_relative;
 
-    Complementarity(const ContactInterface  &interface,
-                    const StaggeredCoupling &coupling);
+    Complementarity(const ContactInterface &interface,
+                    const InterfaceSolver  &coupling);
   };
 
   /** contact_pressure.csv: z, pressure, u_r of both bodies, gap, status. */
   void
-  write_contact_pressure(const std::string       &filename,
-                         const ContactInterface  &interface,
-                         const PressureSummary   &pressure,
-                         const StaggeredCoupling &coupling);
+  write_contact_pressure(const std::string      &filename,
+                         const ContactInterface &interface,
+                         const PressureSummary  &pressure,
+                         const InterfaceSolver  &coupling);
 
   /** convergence.csv: one row per coupling step. */
   void
-  write_convergence(const std::string       &filename,
-                    const StaggeredCoupling &coupling);
+  write_convergence(const std::string     &filename,
+                    const InterfaceSolver &coupling);
 
   /**
    * interface.vtp: the contact surface as a polyline in the (r, z) plane
    * with pressure, gap and status (1 contact, 0 separated), for ParaView.
    */
   void
-  write_interface_vtp(const std::string       &filename,
-                      const Parameters        &parameters,
-                      const ContactInterface  &interface,
-                      const PressureSummary   &pressure,
-                      const StaggeredCoupling &coupling);
+  write_interface_vtp(const std::string      &filename,
+                      const Parameters       &parameters,
+                      const ContactInterface &interface,
+                      const PressureSummary  &pressure,
+                      const InterfaceSolver  &coupling);
 
   /** Everything a script needs to know about a run, as JSON. */
   struct SummaryData
@@ -93,11 +94,11 @@ namespace coaxfit
     const Body              &shaft;
     const Body              &hub;
     const ContactInterface  &interface;
-    const StaggeredCoupling &coupling;
+    const InterfaceSolver   &coupling;
     const PressureSummary   &pressure;
     const Timing            &timing;
     const Complementarity   &complementarity;
-    const std::string       &controller;
+    const std::string        controller;
     std::vector<std::string> warnings;
   };
 

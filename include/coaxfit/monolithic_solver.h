@@ -1,0 +1,56 @@
+#ifndef coaxfit_monolithic_solver_h
+#define coaxfit_monolithic_solver_h
+
+#include <coaxfit/body.h>
+#include <coaxfit/contact_interface.h>
+#include <coaxfit/interface_solver.h>
+
+namespace coaxfit
+{
+  /**
+   * The reference for the staggered method: both bodies in one linear
+   * system. Shaft and hub DoFs are numbered one after the other; at every
+   * interface point in contact the hub's u_r is tied to the shaft's,
+   * u2 = u1 + d, an inhomogeneous AffineConstraints line, so the system is
+   * solved for both bodies at once by one UMFPACK factorization.
+   *
+   * Unilateral contact is handled by a primal-dual active set loop (as in
+   * deal.II's step-41): after each solve, a tied point whose contact force
+   * is tensile is released, a released point that penetrates is tied again;
+   * the loop ends when the set does not change. Each loop step is one row
+   * of the history (kind "Neumann" is not meaningful here; steps are
+   * monolithic solves).
+   */
+  class MonolithicSolver : public InterfaceSolver
+  {
+  public:
+    MonolithicSolver(Body                      &shaft,
+                     Body                      &hub,
+                     const ContactInterface    &interface,
+                     const UnilateralActiveSet &active_set,
+                     unsigned int               max_steps);
+
+    bool
+    run(std::ostream *progress) override;
+
+    /** Number of factorizations of the coupled system. */
+    unsigned int
+    n_factorizations() const
+    {
+      return factorizations;
+    }
+
+  private:
+    /** Solve the coupled system with the current set of tied points. */
+    void
+    solve_tied();
+
+    Body                   &shaft;
+    Body                   &hub;
+    const ContactInterface &interface;
+    const unsigned int      max_steps;
+    unsigned int            factorizations = 0;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,157 @@
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <coaxfit/monolithic_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace coaxfit
+{
+  MonolithicSolver::MonolithicSolver(Body                      &shaft,
+                                     Body                      &hub,
+                                     const ContactInterface    &interface,
+                                     const UnilateralActiveSet &active_set,
+                                     const unsigned int         max_steps)
+    : InterfaceSolver(active_set)
+    , shaft(shaft)
+    , hub(hub)
+    , interface(interface)
+    , max_steps(max_steps)
+  {}
+
+
+
+  void
+  MonolithicSolver::solve_tied()
+  {
+    const SparseMatrix<double> &K1 = shaft.get_stiffness_matrix();
+    const SparseMatrix<double> &K2 = hub.get_stiffness_matrix();
+    const unsigned int          n1 = K1.m(), n = K1.m() + K2.m();
+    const auto                 &dofs1 = shaft.get_interface_dofs();
+    const auto                 &dofs2 = hub.get_interface_dofs();
+    const double                d     = interface.interference();
+
+    // u2 = u1 + d at every tied point.
+    AffineConstraints<double> ties;
+    for (unsigned int i = 0; i < dofs1.size(); ++i)
+      if (active_set.in_contact()[i])
+        {
+          ties.add_line(n1 + dofs2[i]);
+          ties.add_entry(n1 + dofs2[i], dofs1[i], 1.);
+          ties.set_inhomogeneity(n1 + dofs2[i], d);
+        }
+    ties.close();
+
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int row = 0; row < K1.m(); ++row)
+      for (auto e = K1.begin(row); e != K1.end(row); ++e)
+        dsp.add(row, e->column());
+    for (unsigned int row = 0; row < K2.m(); ++row)
+      for (auto e = K2.begin(row); e != K2.end(row); ++e)
+        dsp.add(n1 + row, n1 + e->column());
+    ties.condense(dsp);
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+
+    SparseMatrix<double> matrix(pattern);
+    for (unsigned int row = 0; row < K1.m(); ++row)
+      for (auto e = K1.begin(row); e != K1.end(row); ++e)
+        matrix.set(row, e->column(), e->value());
+    for (unsigned int row = 0; row < K2.m(); ++row)
+      for (auto e = K2.begin(row); e != K2.end(row); ++e)
+        matrix.set(n1 + row, n1 + e->column(), e->value());
+    Vector<double> rhs(n);
+    ties.condense(matrix, rhs);
+
+    SparseDirectUMFPACK solver;
+    solver.initialize(matrix);
+    ++factorizations;
+    solver.solve(rhs);
+    ties.distribute(rhs);
+
+    Vector<double> x1(K1.m()), x2(K2.m());
+    for (unsigned int i = 0; i < K1.m(); ++i)
+      x1[i] = rhs[i];
+    for (unsigned int i = 0; i < K2.m(); ++i)
+      x2[i] = rhs[n1 + i];
+    shaft.set_solution(x1);
+    hub.set_solution(x2);
+
+    // Contact force from the shaft's reaction (row of K1 u1); the hub's
+    // reaction must be its opposite (checked as the traction mismatch).
+    const unsigned int m = dofs1.size();
+    force.assign(m, 0.);
+    u1.assign(m, 0.);
+    u2.assign(m, 0.);
+    double mismatch = 0., magnitude = 0.;
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        u1[i]     = x1[dofs1[i]];
+        u2[i]     = x2[dofs2[i]];
+        double r1 = 0., r2 = 0.;
+        for (auto e = K1.begin(dofs1[i]); e != K1.end(dofs1[i]); ++e)
+          r1 += e->value() * x1[e->column()];
+        for (auto e = K2.begin(dofs2[i]); e != K2.end(dofs2[i]); ++e)
+          r2 += e->value() * x2[e->column()];
+        // Outward normals: +r for the shaft, -r for the hub.
+        const double f1 = -r1, f2 = r2;
+        force[i]       = f1;
+        const double w = interface.weights()[i];
+        mismatch       = std::max(mismatch, std::abs(f2 - f1) / w);
+        magnitude = std::max({magnitude, std::abs(f1) / w, std::abs(f2) / w});
+      }
+    last_traction_mismatch = magnitude > 0. ? mismatch / magnitude : 0.;
+  }
+
+
+
+  bool
+  MonolithicSolver::run(std::ostream *progress)
+  {
+    history_rows.clear();
+    has_converged = false;
+    if (progress)
+      *progress << "  monolithic solve  |du|/d      |dp|/p      separated\n";
+    for (unsigned int step = 1; step <= max_steps; ++step)
+      {
+        solve_tied();
+        std::vector<double> gap(force.size());
+        double              worst_gap = 0.;
+        for (unsigned int i = 0; i < force.size(); ++i)
+          {
+            gap[i]    = u2[i] - u1[i] - interface.interference();
+            worst_gap = std::max(worst_gap,
+                                 active_set.in_contact()[i] ? std::abs(gap[i]) :
+                                                              -gap[i]);
+          }
+        last_displacement_mismatch = worst_gap / interface.interference();
+        // Released points carry no force: the reaction there is zero.
+        for (unsigned int i = 0; i < force.size(); ++i)
+          if (!active_set.in_contact()[i])
+            force[i] = 0.;
+        const bool changed = active_set.update(force, gap);
+        history_rows.push_back({step,
+                                true,
+                                0.,
+                                last_displacement_mismatch,
+                                last_traction_mismatch,
+                                active_set.n_separated()});
+        if (progress)
+          *progress << std::setw(6) << step << "            " << std::scientific
+                    << std::setprecision(3) << last_displacement_mismatch
+                    << "   " << last_traction_mismatch << "   " << std::setw(4)
+                    << active_set.n_separated() << std::endl;
+        if (!changed)
+          {
+            has_converged = true;
+            break;
+          }
+      }
+    return has_converged;
+  }
+} // namespace coaxfit

@@ -275,34 +275,6 @@ namespace coaxfit
 
 
   void
-  Body::solve_neumann(const std::vector<double> &force,
-                      std::vector<double>       &u_r)
-  {
-    std::vector<double> force_out;
-    solve(std::vector<bool>(n_interface_points(), false),
-          std::vector<double>(n_interface_points(), 0.),
-          force,
-          u_r,
-          force_out);
-  }
-
-
-
-  void
-  Body::solve_dirichlet(const std::vector<double> &u_r,
-                        std::vector<double>       &force)
-  {
-    std::vector<double> u_r_out;
-    solve(std::vector<bool>(n_interface_points(), true),
-          u_r,
-          std::vector<double>(n_interface_points(), 0.),
-          u_r_out,
-          force);
-  }
-
-
-
-  void
   Body::output_results(const std::string &filename) const
   {
     const StressPostprocessor postprocessor(body_material);

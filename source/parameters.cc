@@ -234,6 +234,17 @@ namespace coaxfit
                         "interface quasi-Newton (inverse least squares) "
                         "acceleration. Coupling/Alpha is the first alpha of "
                         "the adaptive controllers.");
+      prm.declare_entry("Interface operator",
+                        "full",
+                        Patterns::Selection("full|condensed"),
+                        "full: every step solves both bodies (two triangular "
+                        "solves each with the cached factorizations). "
+                        "condensed: each body's compliance on S is formed "
+                        "once (one solve per interface point), the iteration "
+                        "runs on the interface only with dense algebra, and "
+                        "one full solve per body gives the final fields; "
+                        "worth it when the steps outnumber the interface "
+                        "points.");
       prm.declare_entry("Beta",
                         "0.5",
                         any_double,
@@ -369,14 +380,15 @@ namespace coaxfit
     prm.leave_subsection();
 
     prm.enter_subsection("Coupling");
-    alpha            = prm.get_double("Alpha");
-    alpha_controller = prm.get("Alpha controller");
-    tolerance        = prm.get_double("Tolerance");
-    max_steps        = prm.get_integer("Max steps");
-    beta             = prm.get_double("Beta");
-    aitken_omega     = prm.get_double("Aitken initial omega");
-    iqn_columns      = prm.get_integer("IQN-ILS columns");
-    iqn_filter       = prm.get_double("IQN-ILS filter");
+    alpha              = prm.get_double("Alpha");
+    alpha_controller   = prm.get("Alpha controller");
+    tolerance          = prm.get_double("Tolerance");
+    max_steps          = prm.get_integer("Max steps");
+    beta               = prm.get_double("Beta");
+    interface_operator = prm.get("Interface operator");
+    aitken_omega       = prm.get_double("Aitken initial omega");
+    iqn_columns        = prm.get_integer("IQN-ILS columns");
+    iqn_filter         = prm.get_double("IQN-ILS filter");
     prm.leave_subsection();
 
     prm.enter_subsection("Contact");

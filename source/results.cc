@@ -263,6 +263,7 @@ namespace coaxfit
 
     out << "  \"timing\": {\"setup\": " << data.timing.setup
         << ", \"factorization\": " << data.timing.factorization
+        << ", \"condensation\": " << data.timing.condensation
         << ", \"coupling\": " << data.timing.coupling
         << ", \"output\": " << data.timing.output
         << ", \"total\": " << data.timing.total << ", \"units\": \"s\"}\n"

@@ -26,8 +26,8 @@ namespace coaxfit
 
 
 
-  StaggeredCoupling::StaggeredCoupling(Body                      &shaft,
-                                       Body                      &hub,
+  StaggeredCoupling::StaggeredCoupling(InterfaceOperator         &shaft,
+                                       InterfaceOperator         &hub,
                                        const ContactInterface    &interface,
                                        AlphaController           &controller,
                                        const double               tolerance,

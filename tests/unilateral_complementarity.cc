@@ -54,10 +54,10 @@ main()
       p.alpha               = alpha;
       coaxfit::CoaxialFit fit(p);
       fit.setup_system();
-      const bool                        converged = fit.solve(nullptr);
-      const coaxfit::StaggeredCoupling &c         = fit.get_coupling();
-      const coaxfit::Complementarity    comp(fit.get_interface(), c);
-      const auto                        zones
+      const bool                      converged = fit.solve(nullptr);
+      const coaxfit::InterfaceSolver &c         = fit.get_coupling();
+      const coaxfit::Complementarity  comp(fit.get_interface(), c);
+      const auto                      zones
         = c.get_active_set().separated_zones(fit.get_interface().z(),
                                              p.contact_length());
       all_zones.push_back(zones);

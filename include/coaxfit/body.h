@@ -11,6 +11,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <coaxfit/interface_operator.h>
 #include <coaxfit/mesh.h>
 #include <coaxfit/parameters.h>
 
@@ -42,7 +43,7 @@ namespace coaxfit
    * factorization is computed once and cached, so repeated solves with the
    * same set cost two triangular solves.
    */
-  class Body
+  class Body : public InterfaceOperator
   {
   public:
     Body(const std::string  &name,
@@ -70,7 +71,7 @@ namespace coaxfit
           const std::vector<double> &displacement,
           const std::vector<double> &force,
           std::vector<double>       &u_r,
-          std::vector<double>       &force_out);
+          std::vector<double>       &force_out) override;
 
     /**
      * Compute (or find in the cache) the factorization for the set of
@@ -81,14 +82,6 @@ namespace coaxfit
     {
       factorization(prescribed);
     }
-
-    /** Neumann step: nodal contact forces on all of S give u_r on S. */
-    void
-    solve_neumann(const std::vector<double> &force, std::vector<double> &u_r);
-
-    /** Dirichlet step: u_r on all of S gives the nodal reactions on S. */
-    void
-    solve_dirichlet(const std::vector<double> &u_r, std::vector<double> &force);
 
     /**
      * Write the last solution as VTU: displacement (mm), the stresses

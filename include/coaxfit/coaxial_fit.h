@@ -84,6 +84,7 @@ namespace coaxfit
     std::unique_ptr<ContactInterface> interface;
     std::unique_ptr<AlphaController>  controller;
     std::unique_ptr<InterfaceSolver>  coupling;
+    std::unique_ptr<CondensedBody>    condensed_shaft, condensed_hub;
     Timing                            timing;
   };
 } // namespace coaxfit

@@ -16,6 +16,7 @@ namespace coaxfit
   {
     double setup         = 0.;
     double factorization = 0.;
+    double condensation  = 0.;
     double coupling      = 0.;
     double output        = 0.;
     double total         = 0.;

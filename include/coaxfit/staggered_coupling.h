@@ -33,8 +33,8 @@ namespace coaxfit
   class StaggeredCoupling : public InterfaceSolver
   {
   public:
-    StaggeredCoupling(Body                      &shaft,
-                      Body                      &hub,
+    StaggeredCoupling(InterfaceOperator         &shaft,
+                      InterfaceOperator         &hub,
                       const ContactInterface    &interface,
                       AlphaController           &controller,
                       double                     tolerance,
@@ -71,8 +71,8 @@ namespace coaxfit
     std::string
     suggested_alpha_range() const;
 
-    Body                   &shaft;
-    Body                   &hub;
+    InterfaceOperator      &shaft;
+    InterfaceOperator      &hub;
     const ContactInterface &interface;
     AlphaController        &controller;
     const double            tolerance;

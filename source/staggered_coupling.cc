@@ -260,6 +260,24 @@ namespace coaxfit
     if (reason.empty())
       return;
 
+    // Growth or a stall far below the start is the round-off floor of an
+    // ill-conditioned interface problem, not a bad alpha.
+    double best = std::numeric_limits<double>::infinity();
+    for (const CouplingStep &s : history_rows)
+      best = std::min(best, residual(s));
+    if (std::isfinite(current) && current < 1e-4)
+      {
+        std::ostringstream msg;
+        msg << std::setprecision(2) << "the coupling iteration stopped "
+            << "improving at step " << last.step << " (" << reason
+            << "): the mismatch reached " << best
+            << ", the round-off level of this problem (thin walls give "
+            << "cells of large aspect ratio and an ill-conditioned "
+            << "interface problem); set Coupling/Tolerance above "
+            << 10. * best << " or use fewer Mesh/Radial cells.";
+        throw SolverError(msg.str());
+      }
+
     std::ostringstream msg;
     msg << "the coupling iteration failed at step " << last.step
         << " with Coupling/Alpha controller = " << controller.name()

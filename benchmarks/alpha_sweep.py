@@ -12,8 +12,9 @@ import os
 
 from coaxfit_run import CASES, ROOT, paper_alpha, run
 
-ALPHAS = [round(0.002 * k, 3) for k in range(1, 26)] + \
-         [round(0.06 + 0.02 * k, 2) for k in range(47)]
+ALPHAS = [0.002, 0.004, 0.006, 0.008, 0.01, 0.013, 0.016, 0.02, 0.025, 0.03,
+          0.04, 0.05, 0.06, 0.08, 0.1, 0.12, 0.15, 0.2, 0.25, 0.3, 0.35,
+          0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95]
 MESHES = {"paper-like Q1": ["Mesh/Degree=1", "Mesh/Grading ratio=1",
                             "Mesh/Global refinements=0"],
           "shipped Q2 ref1": []}

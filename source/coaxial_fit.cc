@@ -307,6 +307,9 @@ namespace coaxfit
   bool
   CoaxialFit::run(std::ostream &out)
   {
+    // Created first, so that a directory that cannot be made stops the run
+    // before any work; removed again if the run fails before writing.
+    const bool created = !std::filesystem::exists(parameters.output_directory);
     make_output_directory(parameters.output_directory);
     setup_system();
     out << "coaxfit: case " << parameters.case_name << '\n'
@@ -314,7 +317,17 @@ namespace coaxfit
         << " DoFs;  hub: " << hub.n_cells() << " cells, " << hub.n_dofs()
         << " DoFs;  " << interface->n_points() << " interface points, FE_Q("
         << parameters.degree << ")\n";
-    const bool converged = solve(&out);
+    bool converged = false;
+    try
+      {
+        converged = solve(&out);
+      }
+    catch (const SolverError &)
+      {
+        if (created && std::filesystem::is_empty(parameters.output_directory))
+          std::filesystem::remove(parameters.output_directory);
+        throw;
+      }
     output_results(out);
     return converged;
   }

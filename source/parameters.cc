@@ -106,23 +106,25 @@ namespace coaxfit
         "Nominal contact radius in mm: outer radius of the "
         "shaft and bore of the hub; both bodies are meshed "
         "at this radius (small strain). Allowed: R0 < R1 < R2.");
-      prm.declare_entry("R2",
-                        "200",
-                        any_double,
-                        "Outer radius of the hub D2 in mm. Allowed: R2 > R1.");
-      prm.declare_entry("L1",
-                        "200",
-                        any_double,
-                        "HALF length of the shaft in mm, measured from the "
-                        "common mid-plane z = 0 (the shaft is 2 L1 long), as "
-                        "in the paper's table (l1 = L1/R1). Allowed: L1 > 0.");
+      prm.declare_entry(
+        "R2",
+        "200",
+        any_double,
+        "Outer radius of the hub D2 in mm. Allowed: R1 < R2 <= 1e4 R1.");
+      prm.declare_entry(
+        "L1",
+        "200",
+        any_double,
+        "HALF length of the shaft in mm, measured from the "
+        "common mid-plane z = 0 (the shaft is 2 L1 long), as "
+        "in the paper's table (l1 = L1/R1). Allowed: 1e-4 R1 <= L1 <= 1e4 R1.");
       prm.declare_entry("L2",
                         "100",
                         any_double,
                         "HALF length of the hub in mm, measured from the "
                         "common mid-plane z = 0 (the hub is 2 L2 long). The "
                         "contact surface is r = R1, 0 <= z <= min(L1, L2). "
-                        "Allowed: L2 > 0.");
+                        "Allowed: 1e-4 R1 <= L2 <= 1e4 R1.");
       prm.declare_entry("d",
                         "0.25",
                         any_double,
@@ -436,8 +438,20 @@ namespace coaxfit
             R1,
             "R0 < R1 < R2 (R0 = " + number(R0) + ")");
     require(R2 > R1, "Geometry/R2", R2, "R2 > R1 (R1 = " + number(R1) + ")");
-    require(L1 > 0., "Geometry/L1", L1, "L1 > 0");
-    require(L2 > 0., "Geometry/L2", L2, "L2 > 0");
+    // Proportions a mesh of 2D cells can represent in double precision.
+    require(R2 <= 1e4 * R1, "Geometry/R2", R2, "R1 < R2 <= 1e4 R1");
+    require(R1 - R0 >= 1e-6 * R1,
+            "Geometry/R0",
+            R0,
+            "a wall R1 - R0 of at least 1e-6 R1");
+    require(L1 > 0. && L1 >= 1e-4 * R1 && L1 <= 1e4 * R1,
+            "Geometry/L1",
+            L1,
+            "1e-4 R1 <= L1 <= 1e4 R1");
+    require(L2 > 0. && L2 >= 1e-4 * R1 && L2 <= 1e4 * R1,
+            "Geometry/L2",
+            L2,
+            "1e-4 R1 <= L2 <= 1e4 R1");
     require(d > 0., "Geometry/d", d, "0 < d < R1 - R0");
     require(d < R1 - R0, "Geometry/d", d, "0 < d < R1 - R0");
     require(shaft.E > 0., "Material/Shaft/E", shaft.E, "E > 0");

@@ -273,8 +273,8 @@ namespace coaxfit
             << "): the mismatch reached " << best
             << ", the round-off level of this problem (thin walls give "
             << "cells of large aspect ratio and an ill-conditioned "
-            << "interface problem); set Coupling/Tolerance above "
-            << 10. * best << " or use fewer Mesh/Radial cells.";
+            << "interface problem); set Coupling/Tolerance above " << 10. * best
+            << " or use fewer Mesh/Radial cells.";
         throw SolverError(msg.str());
       }
 

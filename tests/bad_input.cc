@@ -1,6 +1,9 @@
 // Bad input: each invalid parameter file or command line must stop coaxfit
 // before any work with a one-line message naming the parameter (or file)
-// and the allowed range, exit code 1, and no output directory.
+// and the allowed range, exit code 1, and no output directory. A diverging
+// constant alpha (0.2 for variant 5, whose convergent range is about
+// 0.38-0.98) must stop with exit code 2, a one-line message naming alpha,
+// and no output either (so no NaN can be written).
 
 #include <cstdio>
 #include <filesystem>
@@ -99,6 +102,12 @@ main()
       "--set Mesh/Degree=7 " + file_with("set_out_of_range", ""));
   run("unknown_option", "--fast " + file_with("unknown_option", ""));
   run("missing_file", "no_such_file.prm");
+  std::filesystem::create_directories("a_directory.prm");
+  run("unreadable_file", "a_directory.prm");
+  run("d_infinite", geometry("d_infinite", "d = inf"));
+  run("diverging_alpha",
+      "--set \"Coupling/Alpha controller=fixed\" --set Coupling/Alpha=0.2 "
+        + std::string(COAXFIT_SOURCE_DIR) + "/prm/variant_05.prm");
   std::ofstream("a_file") << "x";
   run("directory_not_creatable",
       "--set Output/Directory=a_file/sub "

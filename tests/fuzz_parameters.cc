@@ -1,0 +1,118 @@
+// Fuzz-style robustness: 60 random mutations (fixed seed) of a valid
+// parameter file, each run through the coaxfit executable with a 60 s
+// limit. Every run must end either as a valid run (exit 0 or 2 with
+// summary.json) or with a clean one-line "coaxfit: error:" message and exit
+// 1 and no output directory: never a crash (signal, exit 3), a hang or a
+// multi-line error.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+int
+main()
+{
+  const std::vector<std::string> lines  = {"subsection Geometry",
+                                           "  set R0 = 0",
+                                           "  set R1 = 100",
+                                           "  set R2 = 200",
+                                           "  set L1 = 200",
+                                           "  set L2 = 100",
+                                           "  set d  = 0.25",
+                                           "end",
+                                           "subsection Mesh",
+                                           "  set Axial cells = 6",
+                                           "  set Radial cells = 4",
+                                           "  set Global refinements = 0",
+                                           "end",
+                                           "subsection Coupling",
+                                           "  set Alpha = 0.8",
+                                           "  set Max steps = 100",
+                                           "end",
+                                           "subsection Output",
+                                           "  set Write vtu = false",
+                                           "end"};
+  const std::vector<std::string> tokens = {"",
+                                           "-1",
+                                           "0",
+                                           "0.5",
+                                           "1e300",
+                                           "-1e-300",
+                                           "nan",
+                                           "inf",
+                                           "abc",
+                                           "1,5",
+                                           "0x10",
+                                           "true",
+                                           "2e5x",
+                                           "= 3",
+                                           "99",
+                                           "1e-9"};
+  std::mt19937                   random(20261121);
+  unsigned int                   valid = 0, rejected = 0, bad = 0;
+  for (unsigned int k = 0; k < 60; ++k)
+    {
+      std::vector<std::string> mutated = lines;
+      const unsigned int       kind    = random() % 4;
+      const unsigned int       i       = random() % mutated.size();
+      if (kind == 0 || kind == 1) // replace a value
+        {
+          const auto eq = mutated[i].find('=');
+          if (eq != std::string::npos)
+            mutated[i] = mutated[i].substr(0, eq + 1) + " "
+                         + tokens[random() % tokens.size()];
+          else
+            mutated[i] = tokens[random() % tokens.size()];
+        }
+      else if (kind == 2) // delete a line
+        mutated.erase(mutated.begin() + i);
+      else // duplicate a line elsewhere
+        mutated.insert(mutated.begin() + random() % mutated.size(), mutated[i]);
+
+      const std::string name = "fuzz_" + std::to_string(k) + ".prm";
+      const std::string dir  = "fuzz_out_" + std::to_string(k);
+      {
+        std::ofstream out(name);
+        for (const auto &line : mutated)
+          out << line << '\n';
+      }
+      std::filesystem::remove_all(dir);
+      const std::string command
+        = "timeout 60 " + std::string(COAXFIT_EXECUTABLE)
+          + " --set Output/Directory=" + dir + " " + name + " 2>&1 >/dev/null";
+      FILE       *pipe = popen(command.c_str(), "r");
+      std::string message;
+      char        buffer[4096];
+      while (fgets(buffer, sizeof(buffer), pipe))
+        message += buffer;
+      const int    status  = pclose(pipe);
+      const int    code    = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      unsigned int n_lines = 0;
+      for (const char c : message)
+        n_lines += (c == '\n');
+      const bool ran = (code == 0 || code == 2)
+                       && std::filesystem::exists(dir + "/summary.json");
+      const bool clean_error = code == 1 && n_lines == 1
+                               && message.rfind("coaxfit: error: ", 0) == 0
+                               && !std::filesystem::exists(dir);
+      if (ran)
+        ++valid;
+      else if (clean_error)
+        ++rejected;
+      else
+        {
+          ++bad;
+          std::cout << "mutation " << k << ": exit code " << code << ", "
+                    << n_lines << " line(s): " << message << std::endl;
+        }
+    }
+  std::cout << "60 mutations: " << valid << " valid runs, " << rejected
+            << " clean rejections, " << bad << " crashes, hangs or unclear "
+            << "errors" << std::endl;
+}

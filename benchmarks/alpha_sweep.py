@@ -58,15 +58,18 @@ def best(case, mesh, column):
     return "%g-%g" % (min(alphas), max(alphas)) if len(alphas) > 1 else "%g" % alphas[0], steps
 
 
-print("\n| m | paper alpha* | mesh | best alpha to 1e-2 (steps) | best alpha to 1e-8 (steps) | convergent alphas |")
-print("|---|---|---|---|---|---|")
+summary = ["| m | paper alpha* | mesh | best alpha to 1e-2 (steps) | best alpha to 1e-8 (steps) | convergent alphas on the grid |",
+           "|---|---|---|---|---|---|"]
 for case in CASES:
     for mesh in MESHES:
         a2, s2 = best(case, mesh, 3)
         a8, s8 = best(case, mesh, 4)
         conv = [r[2] for r in rows if r[0] == case and r[1] == mesh and r[4] != ""]
         rng = "%g-%g" % (min(conv), max(conv)) if conv else "none"
-        print("| %d | %g | %s | %s (%s) | %s (%s) | %s |" % (int(case[-2:]), paper_alpha(case), mesh, a2, s2, a8, s8, rng))
+        summary.append("| %d | %g | %s | %s (%s) | %s (%s) | %s |" % (int(case[-2:]), paper_alpha(case), mesh, a2, s2, a8, s8, rng))
+print("\n".join(summary))
+with open(os.path.join(ROOT, "benchmarks", "alpha_sweep_summary.md"), "w") as f:
+    f.write("\n".join(summary) + "\n")
 
 try:
     import matplotlib

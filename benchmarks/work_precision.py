@@ -76,13 +76,16 @@ print("\n| case | method | level | DoFs | steps | setup s | factorization s | so
 print("|---" * 13 + "|")
 for r in rows:
     print("| " + " | ".join(str(x) for x in r) + " |")
-print("\nstaggered / monolithic total time:")
+lines = ["Staggered (iqn-ils, full solves) / monolithic total wall time:", ""]
 for case in CASES:
     for r in rows:
         if r[0] == case and r[1] == "staggered" and r[8] != "":
             mono = [x for x in rows if x[0] == case and x[1] == "monolithic" and x[2] == r[2]]
             if mono and mono[0][8] != "":
-                print("- %s level %d (%s DoFs): %.2f" % (case, r[2], r[3], float(r[8]) / float(mono[0][8])))
+                lines.append("- %s level %d (%s DoFs): %.2f" % (case, r[2], r[3], float(r[8]) / float(mono[0][8])))
+print("\n".join(lines))
+with open(os.path.join(ROOT, "benchmarks", "work_precision_summary.md"), "w") as f:
+    f.write("\n".join(lines) + "\n")
 
 try:
     import matplotlib

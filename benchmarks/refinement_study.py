@@ -6,7 +6,8 @@ iqn-ils, unilateral) runs coaxfit at global refinements 0..N (default 4) and
 reports the pressure at z = 0, the mean pressure over the contact and their
 relative change against the finest level. Writes
 benchmarks/refinement_study.csv and prints a markdown table.
-Usage: python3 benchmarks/refinement_study.py [max_refinement]
+Usage: python3 benchmarks/refinement_study.py [max_refinement [case...]]
+(with cases given, their rows are appended to the CSV)
 """
 import csv
 import os
@@ -15,8 +16,9 @@ import sys
 from coaxfit_run import ROOT, run
 
 finest = int(sys.argv[1]) if len(sys.argv) > 1 else 4
+cases = sys.argv[2:] or ["lame"] + ["variant_%02d" % m for m in range(1, 19)]
 rows = []
-for case in ["lame"] + ["variant_%02d" % m for m in range(1, 19)]:
+for case in cases:
     results = [run(case, ["Mesh/Global refinements=%d" % r])[0] for r in range(finest + 1)]
     ref = results[-1]
     for r, s in enumerate(results):
@@ -29,10 +31,13 @@ for case in ["lame"] + ["variant_%02d" % m for m in range(1, 19)]:
                      "%.1e" % abs(p0 / ref["pressure"]["at_mid_plane"] - 1),
                      "%.1e" % abs(pm / ref["pressure"]["mean"] - 1), s["iterations"]])
         print(rows[-1], flush=True)
-with open(os.path.join(ROOT, "benchmarks", "refinement_study.csv"), "w", newline="") as f:
+path = os.path.join(ROOT, "benchmarks", "refinement_study.csv")
+append = len(sys.argv) > 2 and os.path.exists(path)
+with open(path, "a" if append else "w", newline="") as f:
     w = csv.writer(f)
-    w.writerow(["case", "refinement", "dofs", "p_mid_MPa", "p_mean_MPa",
-                "rel_change_mid_vs_finest", "rel_change_mean_vs_finest", "steps"])
+    if not append:
+        w.writerow(["case", "refinement", "dofs", "p_mid_MPa", "p_mean_MPa",
+                    "rel_change_mid_vs_finest", "rel_change_mean_vs_finest", "steps"])
     w.writerows(rows)
 print("\n| case | ref | DoFs | p(0) MPa | mean MPa | change of p(0) vs finest | change of mean vs finest | steps |")
 print("|---|---|---|---|---|---|---|---|")

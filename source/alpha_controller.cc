@@ -116,7 +116,9 @@ namespace coaxfit
   PointwiseAlphaController::PointwiseAlphaController(const double initial_alpha,
                                                      const double beta)
     : WinklerAlphaController(initial_alpha)
-    , beta(beta)
+    , beta(beta > 0. ? beta : 0.5)
+    , automatic(beta == 0.)
+    , searching(beta == 0.)
   {}
 
 
@@ -137,6 +139,31 @@ namespace coaxfit
     values.assign(n, value);
     if (dot(state.force, state.force) == 0.)
       return;
+
+    // Automatic beta: one double step per candidate, then keep the best.
+    if (automatic && searching)
+      {
+        if (last_mismatch > 0.)
+          {
+            tried.emplace_back(beta,
+                               state.displacement_mismatch / last_mismatch);
+            if (tried.size() == 1)
+              beta = 0.3;
+            else if (tried.size() == 2)
+              beta = (tried[1].second < tried[0].second) ? 0.15 : 0.7;
+            else
+              {
+                searching = false;
+                beta      = std::min_element(tried.begin(),
+                                        tried.end(),
+                                        [](const auto &a, const auto &b) {
+                                          return a.second < b.second;
+                                        })
+                         ->first;
+              }
+          }
+        last_mismatch = state.displacement_mismatch;
+      }
     for (unsigned int i = 0; i < n; ++i)
       {
         const double u1          = std::abs(state.u_shaft[i]);
@@ -311,6 +338,7 @@ namespace coaxfit
     if (name == "pointwise")
       return std::make_unique<PointwiseAlphaController>(parameters.alpha,
                                                         parameters.beta);
+
     if (name == "aitken")
       return std::make_unique<AitkenController>(parameters.alpha,
                                                 parameters.aitken_omega);

@@ -248,11 +248,13 @@ namespace coaxfit
                         "worth it when the steps outnumber the interface "
                         "points.");
       prm.declare_entry("Beta",
-                        "0.5",
-                        any_double,
+                        "auto",
+                        Patterns::Anything(),
                         "beta of the pointwise controller, formula (4.22): "
                         "alpha_i = beta u2/((1 - beta) u1 + beta u2); 0.5 "
-                        "gives (4.21). Allowed: 0 < beta < 1.");
+                        "gives (4.21). auto: chosen from the contraction of "
+                        "the first steps' residuals among 0.5, 0.3 and 0.15 "
+                        "or 0.7. Allowed: auto or 0 < beta < 1.");
       prm.declare_entry("Aitken initial omega",
                         "1",
                         any_double,
@@ -382,11 +384,27 @@ namespace coaxfit
     prm.leave_subsection();
 
     prm.enter_subsection("Coupling");
-    alpha              = prm.get_double("Alpha");
-    alpha_controller   = prm.get("Alpha controller");
-    tolerance          = prm.get_double("Tolerance");
-    max_steps          = prm.get_integer("Max steps");
-    beta               = prm.get_double("Beta");
+    alpha            = prm.get_double("Alpha");
+    alpha_controller = prm.get("Alpha controller");
+    tolerance        = prm.get_double("Tolerance");
+    max_steps        = prm.get_integer("Max steps");
+    {
+      const std::string b = prm.get("Beta");
+      if (b == "auto")
+        beta = 0.;
+      else
+        {
+          std::istringstream in(b);
+          if (!(in >> beta) || !(in >> std::ws).eof())
+            throw InputError("parameter Coupling/Beta = " + b
+                             + " is not a number: allowed is auto or "
+                               "0 < beta < 1.");
+          if (!(beta > 0. && beta < 1.))
+            throw InputError("parameter Coupling/Beta = " + b
+                             + " is out of range: allowed is auto or "
+                               "0 < beta < 1.");
+        }
+    }
     interface_operator = prm.get("Interface operator");
     aitken_omega       = prm.get_double("Aitken initial omega");
     iqn_columns        = prm.get_integer("IQN-ILS columns");
@@ -425,7 +443,6 @@ namespace coaxfit
          {"Mesh/Grading ratio", grading_ratio},
          {"Coupling/Alpha", alpha},
          {"Coupling/Tolerance", tolerance},
-         {"Coupling/Beta", beta},
          {"Coupling/Aitken initial omega", aitken_omega},
          {"Coupling/IQN-ILS filter", iqn_filter},
          {"Contact/Active set tolerance", active_set_tolerance}};
@@ -465,7 +482,6 @@ namespace coaxfit
             hub.nu,
             "-1 < nu < 0.5");
     require(alpha > 0. && alpha < 1., "Coupling/Alpha", alpha, "0 < alpha < 1");
-    require(beta > 0. && beta < 1., "Coupling/Beta", beta, "0 < beta < 1");
     require(aitken_omega > 0. && aitken_omega <= 2.,
             "Coupling/Aitken initial omega",
             aitken_omega,

@@ -313,8 +313,12 @@ namespace coaxfit
         if (history_rows.size() % 2 == 0)
           {
             neumann_step();
-            controller.update(
-              {history_rows.back().step, force, u1, u2, interface.weights()});
+            controller.update({history_rows.back().step,
+                               force,
+                               u1,
+                               u2,
+                               interface.weights(),
+                               last_displacement_mismatch});
           }
         else
           dirichlet_step();

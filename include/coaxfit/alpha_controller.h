@@ -17,10 +17,11 @@ namespace coaxfit
   struct NeumannState
   {
     unsigned int               step;
-    const std::vector<double> &force;   ///< applied nodal force
-    const std::vector<double> &u_shaft; ///< u_r of D1 on S
-    const std::vector<double> &u_hub;   ///< u_r of D2 on S
-    const std::vector<double> &weights; ///< int_S N_i r dz
+    const std::vector<double> &force;                 ///< applied nodal force
+    const std::vector<double> &u_shaft;               ///< u_r of D1 on S
+    const std::vector<double> &u_hub;                 ///< u_r of D2 on S
+    const std::vector<double> &weights;               ///< int_S N_i r dz
+    double                     displacement_mismatch; ///< max|u2 - u1 - d| / d
   };
 
   /**
@@ -131,6 +132,12 @@ namespace coaxfit
    * alpha_i = beta |u2_i| / ((1 - beta) |u1_i| + beta |u2_i|), from the
    * latest loaded Neumann step (beta = 1/2 is (4.21)). Points with no
    * displacement use the global Winkler alpha.
+   *
+   * With beta = 0 (Coupling/Beta = auto) beta is chosen from the first
+   * steps' residuals, as the paper tuned it by hand: the contraction of the
+   * displacement mismatch over one double step is measured for beta = 0.5,
+   * then 0.3, then 0.15 or 0.7 (towards the better one), and the beta with
+   * the smallest contraction is kept for the rest of the run.
    */
   class PointwiseAlphaController : public WinklerAlphaController
   {
@@ -146,9 +153,20 @@ namespace coaxfit
     double
     alpha(unsigned int i) const override;
 
+    /** The beta in use. */
+    double
+    current_beta() const
+    {
+      return beta;
+    }
+
   private:
-    const double        beta;
-    std::vector<double> values;
+    double                                 beta;
+    const bool                             automatic;
+    bool                                   searching;
+    double                                 last_mismatch = -1.;
+    std::vector<std::pair<double, double>> tried; ///< (beta, contraction)
+    std::vector<double>                    values;
   };
 
   /**

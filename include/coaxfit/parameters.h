@@ -74,11 +74,11 @@ namespace coaxfit
 
     /** @name Coupling */
     /** @{ */
-    double       alpha              = 0.8;
-    std::string  alpha_controller   = "iqn-ils";
-    double       tolerance          = 1e-8;
-    unsigned int max_steps          = 200;
-    double       beta               = 0.5;    ///< pointwise controller, (4.22)
+    double       alpha            = 0.8;
+    std::string  alpha_controller = "iqn-ils";
+    double       tolerance        = 1e-8;
+    unsigned int max_steps        = 200;
+    double       beta = 0.; ///< pointwise controller, (4.22); 0: automatic
     double       aitken_omega       = 1.0;    ///< first Aitken relaxation
     unsigned int iqn_columns        = 50;     ///< IQN-ILS history length
     double       iqn_filter         = 1e-10;  ///< IQN-ILS QR filter

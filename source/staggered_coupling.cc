@@ -262,18 +262,25 @@ namespace coaxfit
 
     // Growth or a stall far below the start is the round-off floor of an
     // ill-conditioned interface problem, not a bad alpha.
-    double best = std::numeric_limits<double>::infinity();
+    double best_displacement = std::numeric_limits<double>::infinity();
+    double best_traction     = std::numeric_limits<double>::infinity();
     for (const CouplingStep &s : history_rows)
-      best = std::min(best, residual(s));
+      if (s.neumann)
+        best_displacement
+          = std::min(best_displacement, s.displacement_mismatch);
+      else
+        best_traction = std::min(best_traction, s.traction_mismatch);
+    const double floor = std::max(best_displacement, best_traction);
     if (std::isfinite(current) && current < 1e-4)
       {
         std::ostringstream msg;
         msg << std::setprecision(2) << "the coupling iteration stopped "
             << "improving at step " << last.step << " (" << reason
-            << "): the mismatch reached " << best
+            << "): the mismatches reached |du|/d = " << best_displacement
+            << " and |dp|/p = " << best_traction
             << ", the round-off level of this problem (thin walls give "
             << "cells of large aspect ratio and an ill-conditioned "
-            << "interface problem); set Coupling/Tolerance above " << 10. * best
+            << "interface problem); set Coupling/Tolerance above " << 2. * floor
             << " or use fewer Mesh/Radial cells.";
         throw SolverError(msg.str());
       }

@@ -129,8 +129,9 @@ namespace coaxfit
                         "0.25",
                         any_double,
                         "Radial interference in mm: the shaft's radius "
-                        "exceeds the bore's by d. Allowed: 0 < d < R1 - R0 "
-                        "(small strain: keep d/R1 well below 0.01).");
+                        "exceeds the bore's by d. The model is linear (small "
+                        "strain, both bodies meshed at R1), so d/R1 should "
+                        "stay well below 0.01. Allowed: 0 < d <= 0.1 R1.");
     }
     prm.leave_subsection();
 
@@ -469,8 +470,7 @@ namespace coaxfit
             "Geometry/L2",
             L2,
             "1e-4 R1 <= L2 <= 1e4 R1");
-    require(d > 0., "Geometry/d", d, "0 < d < R1 - R0");
-    require(d < R1 - R0, "Geometry/d", d, "0 < d < R1 - R0");
+    require(d > 0. && d <= 0.1 * R1, "Geometry/d", d, "0 < d <= 0.1 R1");
     require(shaft.E > 0., "Material/Shaft/E", shaft.E, "E > 0");
     require(hub.E > 0., "Material/Hub/E", hub.E, "E > 0");
     require(shaft.nu > -1. && shaft.nu < 0.5,

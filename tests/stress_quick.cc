@@ -79,7 +79,7 @@ main()
   {
     coaxfit::Parameters p = lame_case();
     p.R0                  = 99.9; // beta1 = 0.999
-    p.d                   = 0.05; // d < R1 - R0 = 0.1 mm
+    p.d                   = 0.05; // delta = 5e-4
     p.tolerance           = 1e-5; // round-off floor of this mesh: about 2e-6
     report("thin tube beta1 = 0.999 (tolerance 1e-5)", solve(p), 1e-3);
     p    = lame_case();

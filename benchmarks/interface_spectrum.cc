@@ -1,7 +1,7 @@
 // Interface spectrum of the staggered process for one .prm case.
 //
 // Forms each body's compliance on S (the paper's K_i: nodal force -> u_r,
-// one Neumann solve per interface point with the cached factorization),
+// one Neumann solve per interface point, CondensedBody),
 // solves the generalized eigenproblem K1 x = lambda K2 x and prints what it
 // implies for a constant alpha: the double step (Neumann + Dirichlet)
 // contracts the error of mode lambda by
@@ -48,19 +48,15 @@ main(int argc, char **argv)
           b->assemble_system();
         }
       const unsigned int       n = shaft.n_interface_points();
+      const CondensedBody      condensed_shaft(shaft), condensed_hub(hub);
       LAPACKFullMatrix<double> K1(n, n), K2(n, n);
-      std::vector<double>      f(n, 0.), u;
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          f.assign(n, 0.);
-          f[j] = 1.;
-          shaft.solve_neumann(f, u);
-          for (unsigned int i = 0; i < n; ++i)
-            K1(i, j) = -u[i]; // inward: compliance is positive
-          hub.solve_neumann(f, u);
-          for (unsigned int i = 0; i < n; ++i)
-            K2(i, j) = u[i];
-        }
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            // inward for the shaft: its compliance is -u_r per unit force
+            K1(i, j) = -condensed_shaft.get_compliance()[i][j];
+            K2(i, j) = condensed_hub.get_compliance()[i][j];
+          }
       std::vector<Vector<double>> vectors(n, Vector<double>(n));
       K1.compute_generalized_eigenvalues_symmetric(K2, vectors);
       std::vector<double> lambda(n);

@@ -5,12 +5,12 @@
 // 0.38-0.98) must stop with exit code 2, a one-line message naming alpha,
 // and no output either (so no NaN can be written).
 
-#include <cstdio>
+#include "run_executable.h"
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
 
 namespace
@@ -30,23 +30,12 @@ namespace
   {
     const std::string directory = "out_" + label;
     std::filesystem::remove_all(directory);
-    const std::string command = std::string(COAXFIT_EXECUTABLE)
-                                + " --set Output/Directory=" + directory + " "
-                                + arguments + " 2>&1 >/dev/null";
-    FILE       *pipe = popen(command.c_str(), "r");
-    std::string message;
-    char        buffer[4096];
-    while (fgets(buffer, sizeof(buffer), pipe))
-      message += buffer;
-    const int    status = pclose(pipe);
-    const int    code   = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    unsigned int lines  = 0;
-    for (const char c : message)
-      lines += (c == '\n');
-    std::cout << label << ": exit code " << code << ", " << lines
+    const coaxfit_test::RunResult r
+      = coaxfit_test::run_coaxfit(directory, arguments);
+    std::cout << label << ": exit code " << r.exit_code << ", " << r.lines
               << " line(s), output directory written: "
               << (std::filesystem::exists(directory) ? "YES" : "no") << '\n'
-              << "  " << message;
+              << "  " << r.message;
   }
 
   /** Write the valid file with one line added in section Geometry. */

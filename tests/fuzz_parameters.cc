@@ -5,14 +5,14 @@
 // 1 and no output directory: never a crash (signal, exit 3), a hang or a
 // multi-line error.
 
-#include <cstdio>
+#include "run_executable.h"
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
 
 int
@@ -83,20 +83,11 @@ main()
           out << line << '\n';
       }
       std::filesystem::remove_all(dir);
-      const std::string command
-        = "timeout 60 " + std::string(COAXFIT_EXECUTABLE)
-          + " --set Output/Directory=" + dir + " " + name + " 2>&1 >/dev/null";
-      FILE       *pipe = popen(command.c_str(), "r");
-      std::string message;
-      char        buffer[4096];
-      while (fgets(buffer, sizeof(buffer), pipe))
-        message += buffer;
-      const int    status  = pclose(pipe);
-      const int    code    = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      unsigned int n_lines = 0;
-      for (const char c : message)
-        n_lines += (c == '\n');
-      const bool ran = (code == 0 || code == 2)
+      const coaxfit_test::RunResult r    = coaxfit_test::run_coaxfit(dir, name);
+      const int                     code = r.exit_code;
+      const unsigned int            n_lines = r.lines;
+      const std::string            &message = r.message;
+      const bool                    ran     = (code == 0 || code == 2)
                        && std::filesystem::exists(dir + "/summary.json");
       const bool clean_error = code == 1 && n_lines == 1
                                && message.rfind("coaxfit: error: ", 0) == 0

@@ -6,6 +6,8 @@
 
 #include <coaxfit/coaxial_fit.h>
 
+#include "coupled_cases.h"
+
 #include <iomanip>
 #include <iostream>
 
@@ -31,15 +33,11 @@ namespace
         pressure.push_back(fit.pressure_summary().pressure);
         contact.push_back(fit.get_coupling().get_active_set().in_contact());
       }
-    double difference = 0., magnitude = 0.;
-    for (unsigned int i = 0; i < pressure[0].size(); ++i)
-      {
-        difference
-          = std::max(difference, std::abs(pressure[0][i] - pressure[1][i]));
-        magnitude = std::max(magnitude, std::abs(pressure[1][i]));
-      }
     std::cout << "  same pressure to 1e-8 relative: "
-              << (difference < 1e-8 * magnitude ? "yes" : "NO")
+              << (coaxfit_test::relative_difference(pressure[0], pressure[1])
+                      < 1e-8 ?
+                    "yes" :
+                    "NO")
               << ", same separated points: "
               << (contact[0] == contact[1] ? "yes" : "NO") << std::endl;
   }
@@ -50,11 +48,5 @@ main()
 {
   compare("variant 5", coaxfit::Parameters());
 
-  coaxfit::Parameters v17;
-  v17.R0    = 98.8;
-  v17.L1    = 300.;
-  v17.L2    = 200.;
-  v17.d     = 0.5;
-  v17.alpha = 0.017;
-  compare("variant 17", v17);
+  compare("variant 17", coaxfit_test::variant_17());
 }

@@ -8,24 +8,12 @@
 
 #include <coaxfit/coaxial_fit.h>
 
+#include "coupled_cases.h"
+
 #include <iomanip>
 #include <iostream>
 
-namespace
-{
-  coaxfit::Parameters
-  variant_17()
-  {
-    coaxfit::Parameters p;
-    p.R0    = 98.8;
-    p.R2    = 200.;
-    p.L1    = 300.;
-    p.L2    = 200.;
-    p.d     = 0.5;
-    p.alpha = 0.017;
-    return p;
-  }
-} // namespace
+using coaxfit_test::variant_17;
 
 int
 main()

@@ -63,6 +63,13 @@ namespace coaxfit
           std::vector<double>       &u_r,
           std::vector<double>       &force_out) override;
 
+    /** The compliance C (row-wise): C[i][j] = u_r,i for a unit force at j. */
+    const std::vector<std::vector<double>> &
+    get_compliance() const
+    {
+      return compliance;
+    }
+
     /** Number of LU factorizations of C_PP. */
     unsigned int
     n_factorizations() const

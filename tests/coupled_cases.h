@@ -1,0 +1,43 @@
+// Shared by the coupled tests: the paper's variant 17 (a thin tube that
+// separates) and the comparison of two pressure profiles.
+#ifndef coaxfit_tests_coupled_cases_h
+#define coaxfit_tests_coupled_cases_h
+
+#include <coaxfit/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace coaxfit_test
+{
+  /** Variant 17: beta1 = 0.988, beta2 = 2, l1 = 3, l2 = 2, delta = 0.005. */
+  inline coaxfit::Parameters
+  variant_17()
+  {
+    coaxfit::Parameters p;
+    p.R0    = 98.8;
+    p.R2    = 200.;
+    p.L1    = 300.;
+    p.L2    = 200.;
+    p.d     = 0.5;
+    p.alpha = 0.017;
+    return p;
+  }
+
+  /** max_i |a_i - b_i| / max_i |b_i|. */
+  inline double
+  relative_difference(const std::vector<double> &a,
+                      const std::vector<double> &b)
+  {
+    double difference = 0., magnitude = 0.;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        difference = std::max(difference, std::abs(a[i] - b[i]));
+        magnitude  = std::max(magnitude, std::abs(b[i]));
+      }
+    return difference / magnitude;
+  }
+} // namespace coaxfit_test
+
+#endif

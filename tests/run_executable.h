@@ -1,0 +1,43 @@
+// Shared by the tests that drive the coaxfit executable: run it with an
+// output directory and arguments, capture its standard error.
+#ifndef coaxfit_tests_run_executable_h
+#define coaxfit_tests_run_executable_h
+
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+namespace coaxfit_test
+{
+  /** What one run of the executable left behind. */
+  struct RunResult
+  {
+    int          exit_code; ///< -1 if killed by a signal
+    std::string  message;   ///< standard error
+    unsigned int lines;     ///< lines of standard error
+  };
+
+  /**
+   * Run `timeout 60 coaxfit --set Output/Directory=DIR ARGUMENTS`, discard
+   * standard output, return exit code and standard error.
+   */
+  inline RunResult
+  run_coaxfit(const std::string &directory, const std::string &arguments)
+  {
+    const std::string command = "timeout 60 " + std::string(COAXFIT_EXECUTABLE)
+                                + " --set Output/Directory=" + directory + " "
+                                + arguments + " 2>&1 >/dev/null";
+    FILE       *pipe = popen(command.c_str(), "r");
+    std::string message;
+    char        buffer[4096];
+    while (fgets(buffer, sizeof(buffer), pipe))
+      message += buffer;
+    const int    status = pclose(pipe);
+    unsigned int lines  = 0;
+    for (const char c : message)
+      lines += (c == '\n');
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, message, lines};
+  }
+} // namespace coaxfit_test
+
+#endif

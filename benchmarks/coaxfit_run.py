@@ -18,6 +18,8 @@ def run(case, settings=(), keep=None):
     """Run one case; settings are 'Section/Name=value' strings. Returns
     (summary dict or None, exit code, stderr)."""
     out = keep or tempfile.mkdtemp(prefix="coaxfit_")
+    if keep:
+        subprocess.run(["rm", "-rf", keep])  # no stale results of a failed run
     cmd = [EXE, "--set", "Output/Directory=" + out, "--set", "Output/Write vtu=false"]
     for s in settings:
         cmd += ["--set", s]
@@ -25,7 +27,7 @@ def run(case, settings=(), keep=None):
     proc = subprocess.run(cmd, capture_output=True, text=True)
     path = os.path.join(out, "summary.json")
     summary = None
-    if os.path.exists(path):
+    if proc.returncode in (0, 2) and os.path.exists(path):
         with open(path) as f:
             summary = json.load(f)
     if keep is None:

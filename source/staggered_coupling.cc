@@ -49,8 +49,8 @@ namespace coaxfit
   double
   StaggeredCoupling::relative_gap_residual() const
   {
-    // In contact (f > 0) the gap must vanish; where the surfaces carry no
-    // force they may open (gap >= 0) but must not penetrate.
+    // At contact points the gap must vanish; separated points carry no
+    // force and may open (gap >= 0) but must not penetrate.
     const double             d        = interface.interference();
     const std::vector<bool> &contact  = active_set.in_contact();
     double                   mismatch = 0.;

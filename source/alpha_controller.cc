@@ -113,6 +113,16 @@ namespace coaxfit
 
 
 
+  bool
+  WinklerAlphaController::alpha_changed()
+  {
+    const bool changed = (value != alpha_of_history);
+    alpha_of_history   = value;
+    return changed;
+  }
+
+
+
   PointwiseAlphaController::PointwiseAlphaController(const double initial_alpha,
                                                      const double beta)
     : WinklerAlphaController(initial_alpha)
@@ -205,10 +215,8 @@ namespace coaxfit
   AitkenController::accelerate(const std::vector<double> &applied,
                                std::vector<double>       &next)
   {
-    // A new alpha is a new map G: its old history does not apply.
-    if (value != alpha_of_history)
+    if (alpha_changed())
       restart();
-    alpha_of_history                   = value;
     const std::vector<double> residual = difference(next, applied);
     if (!last_residual.empty())
       {
@@ -256,9 +264,8 @@ namespace coaxfit
   IQNILSController::accelerate(const std::vector<double> &applied,
                                std::vector<double>       &next)
   {
-    if (value != alpha_of_history)
+    if (alpha_changed())
       restart();
-    alpha_of_history = value;
     residuals.push_back(difference(next, applied));
     outputs.push_back(next);
     if (residuals.size() > max_columns + 1)

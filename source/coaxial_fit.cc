@@ -1,4 +1,3 @@
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/timer.h>
 
 #include <coaxfit/alpha_controller.h>

@@ -10,6 +10,8 @@
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/input_error.h>
 
+#include "coupled_cases.h"
+
 #include <iomanip>
 #include <iostream>
 
@@ -63,14 +65,8 @@ main()
   coaxfit::Parameters v5; // variant 5
   compare_controllers("variant 5, alpha0 = 0.8", v5);
 
-  coaxfit::Parameters v13;
-  v13.R0    = 93.;
-  v13.R2    = 200.;
-  v13.L1    = 300.;
-  v13.L2    = 200.;
-  v13.d     = 0.5;
-  v13.alpha = 0.13;
-  compare_controllers("variant 13, alpha0 = 0.13", v13);
+  compare_controllers("variant 13, alpha0 = 0.13",
+                      coaxfit_test::tube_variant(0.93, 0.13));
 
   coaxfit::Parameters lame;
   lame.L1 = lame.L2 = 100.;

@@ -1,5 +1,6 @@
-// Shared by the coupled tests: the paper's variant 17 (a thin tube that
-// separates) and the comparison of two pressure profiles.
+// Shared by the coupled tests: the paper's tube variants (17 separates)
+// and the comparison of two pressure profiles.
+// comparison of two pressure profiles.
 #ifndef coaxfit_tests_coupled_cases_h
 #define coaxfit_tests_coupled_cases_h
 
@@ -11,18 +12,25 @@
 
 namespace coaxfit_test
 {
-  /** Variant 17: beta1 = 0.988, beta2 = 2, l1 = 3, l2 = 2, delta = 0.005. */
+  /** The tube variants: beta2 = 2, l1 = 3, l2 = 2, delta = 0.005. */
   inline coaxfit::Parameters
-  variant_17()
+  tube_variant(const double beta1, const double alpha)
   {
     coaxfit::Parameters p;
-    p.R0    = 98.8;
+    p.R0    = 100. * beta1;
     p.R2    = 200.;
     p.L1    = 300.;
     p.L2    = 200.;
     p.d     = 0.5;
-    p.alpha = 0.017;
+    p.alpha = alpha;
     return p;
+  }
+
+  /** Variant 17: beta1 = 0.988, beta2 = 2, l1 = 3, l2 = 2, delta = 0.005. */
+  inline coaxfit::Parameters
+  variant_17()
+  {
+    return tube_variant(0.988, 0.017);
   }
 
   /** max_i |a_i - b_i| / max_i |b_i|. */

@@ -122,9 +122,18 @@ namespace coaxfit
     void
     update(const NeumannState &state) override;
 
+  protected:
+    /**
+     * Whether alpha changed since the last call: a new alpha is a new map
+     * x -> G(x), so an accelerator must drop the history it built.
+     */
+    bool
+    alpha_changed();
+
   private:
     const bool freeze;
-    bool       estimated = false;
+    bool       estimated        = false;
+    double     alpha_of_history = -1.;
   };
 
   /**
@@ -194,7 +203,6 @@ namespace coaxfit
     const double        initial_omega;
     double              omega;
     std::vector<double> last_residual;
-    double              alpha_of_history = -1.;
   };
 
   /**
@@ -228,7 +236,6 @@ namespace coaxfit
     const double                     filter;
     std::vector<std::vector<double>> residuals; ///< r_k, oldest first
     std::vector<std::vector<double>> outputs;   ///< G(x_k), oldest first
-    double                           alpha_of_history = -1.;
   };
 
   /** The controller selected in @p parameters. */

@@ -1,6 +1,5 @@
 // Shared by the coupled tests: the paper's tube variants (17 separates)
 // and the comparison of two pressure profiles.
-// comparison of two pressure profiles.
 #ifndef coaxfit_tests_coupled_cases_h
 #define coaxfit_tests_coupled_cases_h
 

@@ -79,6 +79,7 @@ namespace coaxfit
 
     factorizations.clear();
     factorization_order.clear();
+    analyzed = false;
   }
 
 
@@ -170,7 +171,7 @@ namespace coaxfit
 
 
 
-  const SparseDirectUMFPACK &
+  const SparseCholesky::Factor &
   Body::factorization(const std::vector<bool> &prescribed)
   {
     const auto found = factorizations.find(prescribed);
@@ -195,8 +196,14 @@ namespace coaxfit
               }
         }
 
-    auto solver = std::make_unique<SparseDirectUMFPACK>();
-    solver->initialize(matrix);
+    if (!analyzed)
+      {
+        // The interface points last: the compliance is then the inverse of
+        // the trailing block of the factor (interface_compliance()).
+        cholesky.analyze(matrix, interface_dofs);
+        analyzed = true;
+      }
+    auto factor = cholesky.factorize(matrix);
     ++factorization_count;
     factorization_seconds += timer.wall_time();
 
@@ -206,7 +213,7 @@ namespace coaxfit
         factorization_order.pop_front();
       }
     factorization_order.push_back(prescribed);
-    return *(factorizations[prescribed] = std::move(solver));
+    return *(factorizations[prescribed] = std::move(factor));
   }
 
 
@@ -246,7 +253,7 @@ namespace coaxfit
                 * displacement[i];
       }
 
-    factorization(prescribed).solve(rhs);
+    cholesky.solve(factorization(prescribed), rhs);
     ++solve_count;
     solution = rhs;
     constraints.distribute(solution);
@@ -270,6 +277,17 @@ namespace coaxfit
         else
           force_out[i] = force[i];
       }
+  }
+
+
+
+  void
+  Body::interface_compliance(FullMatrix<double> &compliance)
+  {
+    const std::vector<bool> none(interface_dofs.size(), false);
+    cholesky.trailing_inverse(factorization(none), compliance);
+    // A unit contact force at point j is the load -normal e_j.
+    compliance *= -body_geometry.contact_normal();
   }
 
 

@@ -1,6 +1,8 @@
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
 
 #include <coaxfit/alpha_controller.h>
+#include <coaxfit/blas_threads.h>
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/input_error.h>
@@ -90,19 +92,23 @@ namespace coaxfit
     interface    = std::make_unique<ContactInterface>(shaft, hub, parameters.d);
     timing.setup = timer.wall_time();
 
-    // Both constraint sets of the bilateral process, factorized up front
-    // and concurrently (the monolithic solver factorizes its own system).
+    // The free body's factorization is needed by every staggered run (the
+    // Neumann answer, the compliance of the condensed operator, the final
+    // fields), so both bodies make it now, concurrently. Factorizations
+    // with prescribed points are made when the coupling first asks for
+    // them (the condensed operator never does). The monolithic solver
+    // factorizes its own system.
     if (parameters.solver_method == "monolithic")
-      return;
+      {
+        set_blas_threads(MultithreadInfo::n_cores());
+        return;
+      }
+    set_blas_threads(1);
     timer.restart();
     const std::vector<bool> none(interface->n_points(), false);
-    const std::vector<bool> all(interface->n_points(), true);
-    Threads::Task<void>     task = Threads::new_task([&]() {
-      shaft.factorize(none);
-      shaft.factorize(all);
-    });
+    Threads::Task<void>     task
+      = Threads::new_task([&]() { shaft.factorize(none); });
     hub.factorize(none);
-    hub.factorize(all);
     task.join();
     timing.factorization = timer.wall_time();
   }
@@ -130,7 +136,7 @@ namespace coaxfit
       }
     InterfaceOperator *shaft_operator = &shaft;
     InterfaceOperator *hub_operator   = &hub;
-    if (parameters.interface_operator == "condensed")
+    if (use_condensed_operator())
       {
         Timer               condensation;
         Threads::Task<void> task = Threads::new_task(
@@ -153,7 +159,7 @@ namespace coaxfit
                           active_set_mode()),
       parameters.active_set_tolerance);
     const bool converged = coupling->run(progress);
-    if (parameters.interface_operator == "condensed")
+    if (use_condensed_operator())
       {
         // The fields of the final state: one full solve per body with the
         // final contact force.
@@ -166,6 +172,16 @@ namespace coaxfit
       }
     timing.coupling = timer.wall_time() - timing.condensation;
     return converged;
+  }
+
+
+
+  bool
+  CoaxialFit::use_condensed_operator() const
+  {
+    return parameters.interface_operator == "condensed"
+           || (parameters.interface_operator == "auto"
+               && interface->n_points() <= max_condensed_points);
   }
 
 
@@ -297,8 +313,9 @@ namespace coaxfit
     if (parameters.print_timing)
       out << std::fixed << std::setprecision(3) << "  wall time: setup "
           << timing.setup << " s, factorization " << timing.factorization
-          << " s, coupling " << timing.coupling << " s, output "
-          << timing.output << " s, total " << timing.total << " s\n";
+          << " s, condensation " << timing.condensation << " s, coupling "
+          << timing.coupling << " s, output " << timing.output << " s, total "
+          << timing.total << " s\n";
   }
 
 

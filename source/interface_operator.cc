@@ -36,16 +36,12 @@ namespace coaxfit
   CondensedBody::CondensedBody(Body &body)
   {
     const unsigned int n = body.n_interface_points();
+    FullMatrix<double> C;
+    body.interface_compliance(C);
     compliance.assign(n, std::vector<double>(n, 0.));
-    std::vector<double> unit(n, 0.), u;
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        unit.assign(n, 0.);
-        unit[j] = 1.;
-        body.solve_neumann(unit, u);
-        for (unsigned int i = 0; i < n; ++i)
-          compliance[i][j] = u[i];
-      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        compliance[i][j] = C(i, j);
   }
 
 

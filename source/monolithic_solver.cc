@@ -1,6 +1,4 @@
-#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -27,6 +25,52 @@ namespace coaxfit
 
 
   void
+  MonolithicSolver::setup_pattern()
+  {
+    // Every entry of K1, and every entry of K2 with its row and its column
+    // each either kept or (tied hub point) replaced by the shaft's DoF: the
+    // union over all active sets.
+    const SparseMatrix<double>     &K1 = shaft.get_stiffness_matrix();
+    const SparseMatrix<double>     &K2 = hub.get_stiffness_matrix();
+    const unsigned int              n1 = K1.m(), n = K1.m() + K2.m();
+    const std::vector<unsigned int> target
+      = tie_targets(std::vector<bool>(shaft.get_interface_dofs().size(), true));
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int row = 0; row < n; ++row)
+      dsp.add(row, row);
+    for (unsigned int row = 0; row < K1.m(); ++row)
+      for (auto e = K1.begin(row); e != K1.end(row); ++e)
+        dsp.add(row, e->column());
+    for (unsigned int row = 0; row < K2.m(); ++row)
+      for (auto e = K2.begin(row); e != K2.end(row); ++e)
+        for (const unsigned int r : {n1 + row, target[n1 + row]})
+          for (const unsigned int c :
+               {n1 + e->column(), target[n1 + e->column()]})
+            dsp.add(r, c);
+    pattern.copy_from(dsp);
+    cholesky.analyze(SparseMatrix<double>(pattern));
+  }
+
+
+
+  std::vector<unsigned int>
+  MonolithicSolver::tie_targets(const std::vector<bool> &tied) const
+  {
+    const unsigned int        n1 = shaft.n_dofs();
+    std::vector<unsigned int> target(n1 + hub.n_dofs());
+    for (unsigned int i = 0; i < target.size(); ++i)
+      target[i] = i;
+    const auto &dofs1 = shaft.get_interface_dofs();
+    const auto &dofs2 = hub.get_interface_dofs();
+    for (unsigned int i = 0; i < dofs1.size(); ++i)
+      if (tied[i])
+        target[n1 + dofs2[i]] = dofs1[i];
+    return target;
+  }
+
+
+
+  void
   MonolithicSolver::solve_tied()
   {
     const SparseMatrix<double> &K1 = shaft.get_stiffness_matrix();
@@ -36,43 +80,40 @@ namespace coaxfit
     const auto                 &dofs2 = hub.get_interface_dofs();
     const double                d     = interface.interference();
 
-    // u2 = u1 + d at every tied point.
-    AffineConstraints<double> ties;
-    for (unsigned int i = 0; i < dofs1.size(); ++i)
-      if (active_set.in_contact()[i])
-        {
-          ties.add_line(n1 + dofs2[i]);
-          ties.add_entry(n1 + dofs2[i], dofs1[i], 1.);
-          ties.set_inhomogeneity(n1 + dofs2[i], d);
-        }
-    ties.close();
+    if (pattern.empty())
+      setup_pattern();
 
-    DynamicSparsityPattern dsp(n, n);
-    for (unsigned int row = 0; row < K1.m(); ++row)
-      for (auto e = K1.begin(row); e != K1.end(row); ++e)
-        dsp.add(row, e->column());
-    for (unsigned int row = 0; row < K2.m(); ++row)
-      for (auto e = K2.begin(row); e != K2.end(row); ++e)
-        dsp.add(n1 + row, n1 + e->column());
-    ties.condense(dsp);
-    SparsityPattern pattern;
-    pattern.copy_from(dsp);
+    // u2 = u1 + d at every tied point: the hub's DoF there is eliminated
+    // (its row and column join the shaft's DoF, the shift d goes to the
+    // right hand side); its own row keeps only a positive diagonal.
+    const std::vector<bool>        &tied   = active_set.in_contact();
+    const std::vector<unsigned int> target = tie_targets(tied);
+    std::vector<double>             shift(n, 0.);
+    for (unsigned int i = 0; i < dofs1.size(); ++i)
+      if (tied[i])
+        shift[n1 + dofs2[i]] = d;
 
     SparseMatrix<double> matrix(pattern);
+    Vector<double>       rhs(n);
     for (unsigned int row = 0; row < K1.m(); ++row)
       for (auto e = K1.begin(row); e != K1.end(row); ++e)
-        matrix.set(row, e->column(), e->value());
+        matrix.add(row, e->column(), e->value());
     for (unsigned int row = 0; row < K2.m(); ++row)
       for (auto e = K2.begin(row); e != K2.end(row); ++e)
-        matrix.set(n1 + row, n1 + e->column(), e->value());
-    Vector<double> rhs(n);
-    ties.condense(matrix, rhs);
+        {
+          const unsigned int r = target[n1 + row], c = n1 + e->column();
+          matrix.add(r, target[c], e->value());
+          rhs[r] -= e->value() * shift[c];
+        }
+    for (unsigned int i = 0; i < dofs1.size(); ++i)
+      if (tied[i])
+        matrix.set(n1 + dofs2[i], n1 + dofs2[i], K2.diag_element(dofs2[i]));
 
-    SparseDirectUMFPACK solver;
-    solver.initialize(matrix);
+    cholesky.solve(*cholesky.factorize(matrix), rhs);
     ++factorizations;
-    solver.solve(rhs);
-    ties.distribute(rhs);
+    for (unsigned int i = 0; i < dofs1.size(); ++i)
+      if (tied[i])
+        rhs[n1 + dofs2[i]] = rhs[dofs1[i]] + d;
 
     Vector<double> x1(K1.m()), x2(K2.m());
     for (unsigned int i = 0; i < K1.m(); ++i)

@@ -238,16 +238,21 @@ namespace coaxfit
                         "acceleration. Coupling/Alpha is the first alpha of "
                         "the adaptive controllers.");
       prm.declare_entry("Interface operator",
-                        "full",
-                        Patterns::Selection("full|condensed"),
+                        "auto",
+                        Patterns::Selection("auto|full|condensed"),
                         "full: every step solves both bodies (two triangular "
-                        "solves each with the cached factorizations). "
-                        "condensed: each body's compliance on S is formed "
-                        "once (one solve per interface point), the iteration "
-                        "runs on the interface only with dense algebra, and "
-                        "one full solve per body gives the final fields; "
-                        "worth it when the steps outnumber the interface "
-                        "points.");
+                        "solves each with the cached factorizations, one "
+                        "more factorization per body for every new set of "
+                        "points in contact). condensed: each body's "
+                        "compliance on S is formed once (blocked solves, one "
+                        "right hand side per interface point, with the one "
+                        "factorization of the free body), the iteration runs "
+                        "on the interface only with dense algebra, and one "
+                        "full solve per body gives the final fields. auto: "
+                        "condensed up to 2000 interface points (dense "
+                        "compliance up to 32 MB per body), full above; "
+                        "condensed is 2-7x faster on the benchmark meshes "
+                        "(benchmarks/README.md).");
       prm.declare_entry("Beta",
                         "auto",
                         Patterns::Anything(),

@@ -6,7 +6,6 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -14,6 +13,7 @@
 #include <coaxfit/interface_operator.h>
 #include <coaxfit/mesh.h>
 #include <coaxfit/parameters.h>
+#include <coaxfit/sparse_cholesky.h>
 
 #include <deque>
 #include <map>
@@ -39,9 +39,11 @@ namespace coaxfit
    * matrix M (weight r). Reactions are rows of K u - f, not differentiated
    * stresses.
    *
-   * Each set of prescribed points gives a different matrix; its UMFPACK
-   * factorization is computed once and cached, so repeated solves with the
-   * same set cost two triangular solves.
+   * Each set of prescribed points gives a different matrix (the same
+   * pattern, the prescribed rows and columns zeroed): its sparse Cholesky
+   * factorization (CHOLMOD) is computed when first needed and cached, so
+   * repeated solves with the same set cost two triangular solves. The
+   * symbolic analysis is shared by all sets.
    */
   class Body : public InterfaceOperator
   {
@@ -82,6 +84,14 @@ namespace coaxfit
     {
       factorization(prescribed);
     }
+
+    /**
+     * The interface compliance of the free body (no point prescribed):
+     * C(i, j) = radial displacement at point i for a unit nodal contact force
+     * at point j. Computed with blocked solves of the cached factorization.
+     */
+    void
+    interface_compliance(FullMatrix<double> &compliance);
 
     /**
      * Write the last solution as VTU: displacement (mm), the stresses
@@ -202,11 +212,11 @@ namespace coaxfit
     }
 
     /** Largest number of factorizations kept at once. */
-    static constexpr unsigned int max_cached_factorizations = 8;
+    static constexpr unsigned int max_cached_factorizations = 4;
 
   private:
     /** The factorization for a set of prescribed points, made if needed. */
-    const SparseDirectUMFPACK &
+    const SparseCholesky::Factor &
     factorization(const std::vector<bool> &prescribed);
 
     const std::string  body_name;
@@ -226,7 +236,9 @@ namespace coaxfit
     std::map<std::pair<unsigned int, unsigned int>, double>
       interface_mass_entries;
 
-    std::map<std::vector<bool>, std::unique_ptr<SparseDirectUMFPACK>>
+    SparseCholesky cholesky;
+    bool           analyzed = false;
+    std::map<std::vector<bool>, std::unique_ptr<SparseCholesky::Factor>>
                                   factorizations;
     std::deque<std::vector<bool>> factorization_order;
     unsigned int                  factorization_count   = 0;

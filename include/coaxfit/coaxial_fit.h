@@ -73,7 +73,14 @@ namespace coaxfit
     static BodyGeometry
     hub_geometry(const Parameters &parameters);
 
+    /** Largest interface for which Interface operator = auto condenses. */
+    static constexpr unsigned int max_condensed_points = 2000;
+
   private:
+    /** Whether Coupling/Interface operator (auto: by size) condenses. */
+    bool
+    use_condensed_operator() const;
+
     /** The active set update mode selected by Contact/Active set update. */
     UnilateralActiveSet::Update
     active_set_mode() const;

@@ -1,9 +1,12 @@
 #ifndef coaxfit_monolithic_solver_h
 #define coaxfit_monolithic_solver_h
 
+#include <deal.II/lac/sparsity_pattern.h>
+
 #include <coaxfit/body.h>
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/interface_solver.h>
+#include <coaxfit/sparse_cholesky.h>
 
 namespace coaxfit
 {
@@ -11,8 +14,11 @@ namespace coaxfit
    * The reference for the staggered method: both bodies in one linear
    * system. Shaft and hub DoFs are numbered one after the other; at every
    * interface point in contact the hub's u_r is tied to the shaft's,
-   * u2 = u1 + d, an inhomogeneous AffineConstraints line, so the system is
-   * solved for both bodies at once by one UMFPACK factorization.
+   * u2 = u1 + d, by eliminating the hub's DoF there, so the system is
+   * solved for both bodies at once by one sparse Cholesky factorization
+   * (CHOLMOD). The sparsity pattern is built once with every point tied (a
+   * superset of the pattern of any active set) and analyzed once; each
+   * active set then costs one numeric factorization.
    *
    * Unilateral contact is handled by a primal-dual active set loop (as in
    * deal.II's step-41): after each solve, a tied point whose contact force
@@ -45,11 +51,24 @@ namespace coaxfit
     void
     solve_tied();
 
+    /** The pattern of the coupled matrix with every point tied, analyzed. */
+    void
+    setup_pattern();
+
+    /**
+     * For every DoF of the coupled numbering (shaft, then hub), the DoF it
+     * is assembled into: itself, or for a tied hub point the shaft's DoF.
+     */
+    std::vector<unsigned int>
+    tie_targets(const std::vector<bool> &tied) const;
+
     Body                   &shaft;
     Body                   &hub;
     const ContactInterface &interface;
     const unsigned int      max_steps;
     unsigned int            factorizations = 0;
+    SparsityPattern         pattern;
+    SparseCholesky          cholesky;
   };
 } // namespace coaxfit
 

@@ -82,7 +82,7 @@ namespace coaxfit
     double       aitken_omega       = 1.0;    ///< first Aitken relaxation
     unsigned int iqn_columns        = 50;     ///< IQN-ILS history length
     double       iqn_filter         = 1e-10;  ///< IQN-ILS QR filter
-    std::string  interface_operator = "full"; ///< full or condensed
+    std::string  interface_operator = "auto"; ///< auto, full or condensed
     /** @} */
 
     /** Unilateral contact: the surfaces may separate (Contact/Unilateral). */

@@ -1,0 +1,295 @@
+#include <coaxfit/input_error.h>
+#include <coaxfit/sparse_cholesky.h>
+
+#include <algorithm>
+#include <cholmod.h>
+#include <map>
+#include <string>
+
+extern "C" void
+dpotri_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+
+namespace coaxfit
+{
+  SparseCholesky::Factor::Factor(cholmod_factor *L, cholmod_common *common)
+    : L(L)
+    , common(common)
+  {}
+
+
+
+  SparseCholesky::Factor::~Factor()
+  {
+    cholmod_l_free_factor(&L, common);
+  }
+
+
+
+  struct SparseCholesky::Implementation
+  {
+    Implementation()
+    {
+      cholmod_l_start(&common);
+      // Supernodal L L^T: dense kernels for the factorization and the
+      // blocked solves; no messages on stdout.
+      common.supernodal    = CHOLMOD_SUPERNODAL;
+      common.print         = 0;
+      common.error_handler = nullptr;
+    }
+
+    ~Implementation()
+    {
+      cholmod_l_free_factor(&symbolic, &common);
+      cholmod_l_free_sparse(&upper, &common);
+      cholmod_l_finish(&common);
+    }
+
+    /**
+     * Visit the upper-triangle entries of the symmetric CSR matrix as CHOLMOD
+     * columns with sorted row indices: row r of the deal.II matrix is column
+     * r, the entries with column index c < r first (deal.II keeps them
+     * sorted after the diagonal), then the diagonal.
+     */
+    template <typename Visitor>
+    static void
+    for_each_upper_entry(const SparseMatrix<double> &matrix, Visitor visit)
+    {
+      for (unsigned int r = 0; r < matrix.m(); ++r)
+        {
+          auto entry = matrix.begin(r);
+          Assert(entry != matrix.end(r) && entry->column() == r,
+                 ExcInternalError());
+          const double diagonal = entry->value();
+          for (++entry; entry != matrix.end(r); ++entry)
+            if (entry->column() < r)
+              visit(r, entry->column(), entry->value());
+          visit(r, r, diagonal);
+        }
+    }
+
+    void
+    fill_values(const SparseMatrix<double> &matrix)
+    {
+      double     *x = static_cast<double *>(upper->x);
+      std::size_t k = 0;
+      for_each_upper_entry(matrix, [&](unsigned int, unsigned int, double v) {
+        x[k++] = v;
+      });
+      AssertDimension(k, upper->nzmax);
+    }
+
+    cholmod_common  common;
+    cholmod_sparse *upper    = nullptr;
+    cholmod_factor *symbolic = nullptr;
+    /** The unknowns ordered last, in elimination order, if any. */
+    std::vector<types::global_dof_index> last;
+    /** The same unknowns in the order the caller gave them. */
+    std::vector<types::global_dof_index> caller_last;
+  };
+
+
+
+  SparseCholesky::SparseCholesky()
+    : impl(std::make_unique<Implementation>())
+  {}
+
+
+
+  SparseCholesky::~SparseCholesky() = default;
+
+
+
+  void
+  SparseCholesky::analyze(const SparseMatrix<double>                 &matrix,
+                          const std::vector<types::global_dof_index> &last)
+  {
+    cholmod_common &common = impl->common;
+    cholmod_l_free_factor(&impl->symbolic, &common);
+    cholmod_l_free_sparse(&impl->upper, &common);
+
+    const std::size_t n   = matrix.m();
+    std::size_t       nnz = 0;
+    Implementation::for_each_upper_entry(
+      matrix, [&](unsigned int, unsigned int, double) { ++nnz; });
+    impl->upper = cholmod_l_allocate_sparse(n,
+                                            n,
+                                            nnz,
+                                            /*sorted*/ 1,
+                                            /*packed*/ 1,
+                                            /*stype*/ 1,
+                                            CHOLMOD_REAL,
+                                            &common);
+    if (impl->upper == nullptr)
+      throw SolverError("CHOLMOD could not allocate a matrix of "
+                        + std::to_string(nnz) + " entries");
+    auto       *column_start = static_cast<SuiteSparse_long *>(impl->upper->p);
+    auto       *row_index    = static_cast<SuiteSparse_long *>(impl->upper->i);
+    std::size_t k            = 0;
+    column_start[0]          = 0;
+    Implementation::for_each_upper_entry(
+      matrix, [&](unsigned int column, unsigned int row, double) {
+        row_index[k++]           = row;
+        column_start[column + 1] = k;
+      });
+    impl->fill_values(matrix);
+
+    impl->last.clear();
+    impl->caller_last = last;
+    if (last.empty())
+      impl->symbolic = cholmod_l_analyze(impl->upper, &common);
+    else
+      {
+        // Constrained minimum degree: set 0 (everything else) first, set 1
+        // (the unknowns asked for) last; no postordering, which could move
+        // them.
+        std::vector<SuiteSparse_long> member(n, 0), permutation(n);
+        for (const auto i : last)
+          member[i] = 1;
+        if (!cholmod_l_camd(impl->upper,
+                            nullptr,
+                            0,
+                            member.data(),
+                            permutation.data(),
+                            &common))
+          throw SolverError("CHOLMOD constrained ordering failed (status "
+                            + std::to_string(common.status) + ")");
+        const int nmethods        = common.nmethods,
+                  ordering        = common.method[0].ordering;
+        const int postorder       = common.postorder;
+        common.nmethods           = 1;
+        common.method[0].ordering = CHOLMOD_GIVEN;
+        common.postorder          = 0;
+        impl->symbolic            = cholmod_l_analyze_p(
+          impl->upper, permutation.data(), nullptr, 0, &common);
+        common.nmethods           = nmethods;
+        common.method[0].ordering = ordering;
+        common.postorder          = postorder;
+        if (impl->symbolic != nullptr)
+          {
+            const auto *perm
+              = static_cast<const SuiteSparse_long *>(impl->symbolic->Perm);
+            for (std::size_t k = n - last.size(); k < n; ++k)
+              {
+                if (member[perm[k]] != 1)
+                  throw SolverError("CHOLMOD did not keep the constrained "
+                                    "ordering");
+                impl->last.push_back(perm[k]);
+              }
+          }
+      }
+    if (impl->symbolic == nullptr)
+      throw SolverError("CHOLMOD symbolic analysis failed (status "
+                        + std::to_string(common.status) + ")");
+  }
+
+
+
+  std::unique_ptr<SparseCholesky::Factor>
+  SparseCholesky::factorize(const SparseMatrix<double> &matrix)
+  {
+    Assert(impl->symbolic != nullptr, ExcMessage("call analyze() first"));
+    AssertDimension(matrix.m(), impl->upper->nrow);
+    cholmod_common &common = impl->common;
+    impl->fill_values(matrix);
+    std::unique_ptr<Factor> factor(
+      new Factor(cholmod_l_copy_factor(impl->symbolic, &common), &common));
+    if (factor->L == nullptr
+        || !cholmod_l_factorize(impl->upper, factor->L, &common))
+      throw SolverError("CHOLMOD factorization failed (status "
+                        + std::to_string(common.status) + ")");
+    if (common.status == CHOLMOD_NOT_POSDEF)
+      throw SolverError(
+        "the stiffness matrix is not positive definite (CHOLMOD failed at "
+        "column "
+        + std::to_string(factor->L->minor) + " of " + std::to_string(matrix.m())
+        + "): the body is not held against rigid motion or a material is "
+          "invalid");
+    return factor;
+  }
+
+
+
+  void
+  SparseCholesky::solve(const Factor &factor, Vector<double> &rhs) const
+  {
+    cholmod_common &common = impl->common;
+    cholmod_dense  *b      = cholmod_l_allocate_dense(
+      rhs.size(), 1, rhs.size(), CHOLMOD_REAL, &common);
+    std::copy(rhs.begin(), rhs.end(), static_cast<double *>(b->x));
+    cholmod_dense *x = cholmod_l_solve(CHOLMOD_A, factor.L, b, &common);
+    if (x == nullptr)
+      throw SolverError("CHOLMOD solve failed (status "
+                        + std::to_string(common.status) + ")");
+    const double *values = static_cast<const double *>(x->x);
+    std::copy(values, values + rhs.size(), rhs.begin());
+    cholmod_l_free_dense(&x, &common);
+    cholmod_l_free_dense(&b, &common);
+  }
+
+
+
+  void
+  SparseCholesky::trailing_inverse(const Factor       &factor,
+                                   FullMatrix<double> &inverse) const
+  {
+    const cholmod_factor *L = factor.L;
+    Assert(L->is_super && L->is_ll, ExcInternalError());
+    Assert(!impl->last.empty(), ExcMessage("analyze() was given no unknowns"));
+    const int         n     = impl->last.size();
+    const std::size_t first = L->n - n;
+
+    // L_SS, column major, from the supernodes holding columns first..n-1:
+    // supernode s has columns super[s]..super[s+1]-1, row indices
+    // Ls[pi[s]..pi[s+1]-1] and values Lx[px[s]..] (nsrow x nscol, column
+    // major).
+    std::vector<double> block(static_cast<std::size_t>(n) * n, 0.);
+    const auto         *super = static_cast<const SuiteSparse_long *>(L->super);
+    const auto         *pi    = static_cast<const SuiteSparse_long *>(L->pi);
+    const auto         *px    = static_cast<const SuiteSparse_long *>(L->px);
+    const auto         *Ls    = static_cast<const SuiteSparse_long *>(L->s);
+    const auto         *Lx    = static_cast<const double *>(L->x);
+    for (std::size_t s = 0; s < L->nsuper; ++s)
+      {
+        const std::size_t k1 = super[s], k2 = super[s + 1];
+        if (k2 <= first)
+          continue;
+        const std::size_t nsrow = pi[s + 1] - pi[s];
+        for (std::size_t j = std::max(k1, first); j < k2; ++j)
+          for (std::size_t r = 0; r < nsrow; ++r)
+            {
+              const std::size_t row = Ls[pi[s] + r];
+              if (row >= j)
+                block[(row - first) + (j - first) * n]
+                  = Lx[px[s] + (j - k1) * nsrow + r];
+            }
+      }
+    int info = 0;
+    dpotri_("L", &n, block.data(), &n, &info);
+    if (info != 0)
+      throw SolverError("LAPACK dpotri failed (info " + std::to_string(info)
+                        + ") inverting the interface Schur complement");
+
+    // Back to the caller's numbering of the unknowns.
+    std::map<types::global_dof_index, unsigned int> position;
+    for (unsigned int a = 0; a < impl->last.size(); ++a)
+      position[impl->last[a]] = a;
+    std::vector<std::size_t> p(n);
+    for (int a = 0; a < n; ++a)
+      p[a] = position.at(impl->caller_last[a]);
+    inverse.reinit(n, n);
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        inverse(a, b) = block[std::max(p[a], p[b]) + std::min(p[a], p[b]) * n];
+  }
+
+
+
+  std::size_t
+  SparseCholesky::factor_nonzeros() const
+  {
+    if (impl->symbolic == nullptr)
+      return 0;
+    return impl->symbolic->is_super ? impl->symbolic->xsize :
+                                      impl->symbolic->nzmax;
+  }
+} // namespace coaxfit

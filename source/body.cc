@@ -19,10 +19,12 @@ namespace coaxfit
   Body::Body(const std::string  &name,
              const BodyGeometry &geometry,
              const Material     &material,
-             const unsigned int  degree)
+             const unsigned int  degree,
+             const bool          reduced_volumetric_integration)
     : body_name(name)
     , body_geometry(geometry)
     , body_material(material)
+    , reduced_volumetric_integration(reduced_volumetric_integration)
     , fe(FE_Q<2>(degree), 2)
     , dof_handler(triangulation)
   {}
@@ -88,6 +90,7 @@ namespace coaxfit
   Body::assemble_system()
   {
     const QGauss<2>    quadrature(fe.degree + 1);
+    const QGauss<2>    reduced_quadrature(fe.degree);
     const QGauss<1>    face_quadrature(fe.degree + 1);
     FEValues<2>        fe_values(fe,
                           quadrature,
@@ -101,10 +104,39 @@ namespace coaxfit
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
     std::vector<Axisymmetric::Vector4>   B(dofs_per_cell);
+    FEValues<2>                          reduced_values(fe,
+                               reduced_quadrature,
+                               update_values | update_gradients
+                                 | update_quadrature_points
+                                 | update_JxW_values);
+    // Selective reduced integration: the full rule sees a material without
+    // lambda (same mu), the reduced rule adds lambda tr(e_i) tr(e_j).
+    Material full_rule_material = body_material;
+    if (reduced_volumetric_integration)
+      {
+        full_rule_material.E  = 2. * body_material.mu();
+        full_rule_material.nu = 0.;
+      }
 
     std::map<types::global_dof_index, unsigned int> interface_index;
     for (unsigned int i = 0; i < interface_dofs.size(); ++i)
       interface_index[interface_dofs[i]] = i;
+
+    // The strain of every shape function at quadrature point q.
+    const auto shape_strains
+      = [&](const FEValues<2> &values, const unsigned int q) {
+          const double r = values.quadrature_point(q)[0];
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const unsigned int comp = fe.system_to_component_index(i).first;
+              const double       N    = values.shape_value(i, q);
+              const Tensor<1, 2> grad = values.shape_grad(i, q);
+              const Tensor<1, 2> zero;
+              B[i] = (comp == 0) ? Axisymmetric::strain(N, grad, zero, r) :
+                                   Axisymmetric::strain(0., zero, grad, r);
+            }
+          return r * values.JxW(q);
+        };
 
     stiffness_matrix = 0;
     interface_mass_entries.clear();
@@ -114,26 +146,31 @@ namespace coaxfit
         cell_matrix = 0;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            const double r = fe_values.quadrature_point(q)[0];
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int comp = fe.system_to_component_index(i).first;
-                const double       N    = fe_values.shape_value(i, q);
-                const Tensor<1, 2> grad = fe_values.shape_grad(i, q);
-                const Tensor<1, 2> zero;
-                B[i] = (comp == 0) ? Axisymmetric::strain(N, grad, zero, r) :
-                                     Axisymmetric::strain(0., zero, grad, r);
-              }
-            const double weight = r * fe_values.JxW(q);
+            const double weight = shape_strains(fe_values, q);
             for (unsigned int j = 0; j < dofs_per_cell; ++j)
               {
                 const Axisymmetric::Vector4 sigma_j
-                  = Axisymmetric::stress(body_material, B[j]);
+                  = Axisymmetric::stress(full_rule_material, B[j]);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   cell_matrix(i, j)
                     += (B[i][0] * sigma_j[0] + B[i][1] * sigma_j[1]
                         + B[i][2] * sigma_j[2] + B[i][3] * sigma_j[3])
                        * weight;
+              }
+          }
+        if (reduced_volumetric_integration)
+          {
+            reduced_values.reinit(cell);
+            const double lambda = body_material.lambda();
+            for (const unsigned int q :
+                 reduced_values.quadrature_point_indices())
+              {
+                const double weight = shape_strains(reduced_values, q);
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    cell_matrix(i, j) += lambda * (B[i][0] + B[i][1] + B[i][2])
+                                         * (B[j][0] + B[j][1] + B[j][2])
+                                         * weight;
               }
           }
         cell->get_dof_indices(local_dof_indices);

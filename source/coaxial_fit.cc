@@ -75,8 +75,13 @@ namespace coaxfit
     , shaft("shaft",
             shaft_geometry(parameters),
             parameters.shaft,
-            parameters.degree)
-    , hub("hub", hub_geometry(parameters), parameters.hub, parameters.degree)
+            parameters.degree,
+            parameters.reduced_volumetric_integration)
+    , hub("hub",
+          hub_geometry(parameters),
+          parameters.hub,
+          parameters.degree,
+          parameters.reduced_volumetric_integration)
   {}
 
 

@@ -193,6 +193,19 @@ namespace coaxfit
                         Patterns::Integer(1, 4),
                         "Polynomial degree p of the FE_Q elements for both "
                         "displacement components. Allowed: 1 to 4.");
+      prm.declare_entry("Volumetric integration",
+                        "full",
+                        Patterns::Selection("full|reduced"),
+                        "full: the whole stiffness with the (p+1)-point "
+                        "Gauss rule per direction. reduced: selective "
+                        "reduced integration, the lambda (volumetric) part "
+                        "with the p-point rule, the 2 mu part with p+1; it "
+                        "removes volumetric locking of low degrees for nearly "
+                        "incompressible materials (nu -> 0.5; see "
+                        "benchmarks/stress). The contact pressure comes from "
+                        "reactions, so it is unaffected by the pressure "
+                        "oscillations that the stresses of the VTU may show "
+                        "with reduced.");
     }
     prm.leave_subsection();
 
@@ -383,6 +396,8 @@ namespace coaxfit
     grading_ratio      = prm.get_double("Grading ratio");
     global_refinements = prm.get_integer("Global refinements");
     degree             = prm.get_integer("Degree");
+    reduced_volumetric_integration
+      = prm.get("Volumetric integration") == "reduced";
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");

@@ -18,7 +18,7 @@ namespace coaxfit
       std::ofstream out(filename);
       if (!out)
         throw std::runtime_error("cannot write '" + filename + "'");
-      out << std::setprecision(10);
+      out << std::setprecision(15);
       return out;
     }
 

@@ -48,10 +48,17 @@ namespace coaxfit
   class Body : public InterfaceOperator
   {
   public:
+    /**
+     * With @p reduced_volumetric_integration, the lambda part of the
+     * stiffness is integrated with the p-point Gauss rule per direction
+     * (selective reduced integration against volumetric locking), the
+     * 2 mu part with p + 1 points.
+     */
     Body(const std::string  &name,
          const BodyGeometry &geometry,
          const Material     &material,
-         unsigned int        degree);
+         unsigned int        degree,
+         bool                reduced_volumetric_integration = false);
 
     /** Build the mesh, distribute DoFs, set constraints and sparsity. */
     void
@@ -222,6 +229,7 @@ namespace coaxfit
     const std::string  body_name;
     const BodyGeometry body_geometry;
     const Material     body_material;
+    const bool         reduced_volumetric_integration;
 
     Triangulation<2>          triangulation;
     const FESystem<2>         fe;

@@ -67,6 +67,8 @@ namespace coaxfit
     double       grading_ratio      = 1.4;
     unsigned int global_refinements = 0;
     unsigned int degree             = 2;
+    /** Selective reduced integration of the volumetric (lambda) part. */
+    bool reduced_volumetric_integration = false;
     /** @} */
 
     /** Solver/Method: staggered (the paper's) or monolithic (reference). */

@@ -96,6 +96,20 @@ converged.
 """ + table("work_precision.csv") + """
 
 ![work precision](work_precision.png)
-"""
+
+## Stress suite, long part (`stress/run_stress.py`)
+
+Thin walls, nearly incompressible material (FE degree 1-3, full and
+selective reduced integration of the volumetric part,
+`Mesh/Volumetric integration`), stiffness contrast, grading ratio 2 with
+refinements, interference over five decades, complementarity of separating
+variants on a finer mesh, and a deliberately bad constant alpha. Each case is
+checked against physics (the Lame pressure of equal-length cylinders,
+linearity in d, complementarity) or a clean stop. "limit" marks a case that
+fails its bound for a known, explained reason; the quick part of the suite
+is the ctest `tests/stress_quick`. Regenerate alone with
+`python3 benchmarks/stress/run_stress.py` (about 30 s; exit 1 on any FAIL).
+
+""" + text("stress/stress_table.md")
 with open(os.path.join(HERE, "README.md"), "w") as f:
     f.write(readme)

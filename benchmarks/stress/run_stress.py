@@ -52,6 +52,18 @@ for beta1 in [0.99, 0.995, 0.999]:
     tol = ["Coupling/Tolerance=1e-5"] if beta1 > 0.995 else []
     lame_case("thin tube beta1 = %g" % beta1,
               ["Geometry/R0=%g" % (100 * beta1)] + tol, 1e-3)
+# The tightest wall with the default tolerance 1e-8: the round-off floor of
+# the interface residual may lie above it; then the run must stop cleanly
+# (exit 2, a message naming the floor), not loop or write garbage.
+s, code, err = run("lame", ["Geometry/R0=99.9"])
+if s is not None and s["converged"]:
+    worst, mean = lame_errors(s)
+    add("thin tube beta1 = 0.999, tolerance 1e-8", "converges, or stops at the round-off floor",
+        "converged, worst %.1e, %d steps" % (worst, s["iterations"]), worst < 1e-3)
+else:
+    add("thin tube beta1 = 0.999, tolerance 1e-8", "converges, or stops at the round-off floor",
+        "exit %d: %s" % (code, err[:70]), False,
+        "round-off floor above the tolerance" if code == 2 and "round-off" in err else "")
 for beta2 in [1.05, 1.02, 1.01]:
     lame_case("thin hub beta2 = %g" % beta2, ["Geometry/R2=%g" % (100 * beta2)], 1e-3)
 

@@ -15,7 +15,7 @@ for case in CASES:
     for c in CONTROLLERS:
         s, code, err = run(case, ["Coupling/Alpha controller=" + c])
         if s is not None and s["converged"]:
-            row.append("%d / %.2f s" % (s["iterations"], s["timing"]["coupling"]))
+            row.append("%d / %.3f s" % (s["iterations"], s["timing"]["total"]))
         else:
             row.append("fails")
     rows.append(row)

@@ -75,7 +75,7 @@ the best alpha of each mesh next to the paper's alpha*.
 
 ## Controllers (`controller_benchmark.py`)
 
-Steps / coupling wall time to the tolerance 1e-8, default settings
+Steps / total wall time of the run to the tolerance 1e-8, default settings
 (shipped mesh, unilateral contact); "fails" = diverged, stalled or not
 converged.
 

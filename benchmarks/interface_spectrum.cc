@@ -1,7 +1,7 @@
 // Interface spectrum of the staggered process for one .prm case.
 //
 // Forms each body's compliance on S (the paper's K_i: nodal force -> u_r,
-// one Neumann solve per interface point, CondensedBody),
+// the inverse Schur complement on S, CondensedBody),
 // solves the generalized eigenproblem K1 x = lambda K2 x and prints what it
 // implies for a constant alpha: the double step (Neumann + Dirichlet)
 // contracts the error of mode lambda by

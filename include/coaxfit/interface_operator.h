@@ -44,8 +44,10 @@ namespace coaxfit
   /**
    * Interface condensation: the compliance C of a body on S (the paper's
    * K_i, nodal force -> u_r at the interface points, C_ij = u_r,i for a unit
-   * force at j) formed once from one Neumann solve per interface point with
-   * the body's cached factorization. A step then costs O(n^2) for n
+   * force at j) formed once by Body::interface_compliance(): the inverse of
+   * the trailing block of the free body's Cholesky factor (interface points
+   * are eliminated last), i.e. of the Schur complement on S. A step then
+   * costs O(n^2) for n
    * interface points: u = C F; with prescribed points P and free points Q,
    * C_PP F_P = u_P - C_PQ F_Q (one LU of C_PP per set of prescribed points,
    * cached). Only the final state needs a full solve of the body.

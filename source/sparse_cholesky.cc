@@ -281,15 +281,4 @@ namespace coaxfit
       for (int b = 0; b < n; ++b)
         inverse(a, b) = block[std::max(p[a], p[b]) + std::min(p[a], p[b]) * n];
   }
-
-
-
-  std::size_t
-  SparseCholesky::factor_nonzeros() const
-  {
-    if (impl->symbolic == nullptr)
-      return 0;
-    return impl->symbolic->is_super ? impl->symbolic->xsize :
-                                      impl->symbolic->nzmax;
-  }
 } // namespace coaxfit

@@ -96,9 +96,6 @@ namespace coaxfit
     void
     solve(const Factor &factor, Vector<double> &rhs) const;
 
-    /** Number of nonzeros of the Cholesky factor (0 before analyze()). */
-    std::size_t
-    factor_nonzeros() const;
 
   private:
     struct Implementation;

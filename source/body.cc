@@ -1,5 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -332,17 +333,95 @@ namespace coaxfit
   void
   Body::output_results(const std::string &filename) const
   {
-    const StressPostprocessor postprocessor(body_material);
+    // With selective reduced integration, a third, discontinuous field: the
+    // volumetric stress at the reduced quadrature points (the nodes of
+    // FE_DGQArbitraryNodes on the p-point Gauss rule), interpolated by the
+    // polynomial of degree p - 1 through them.
+    std::unique_ptr<FESystem<2>> fe_out;
+    DoFHandler<2>                dof_handler_out(triangulation);
+    Vector<double>               field;
+    if (reduced_volumetric_integration)
+      {
+        fe_out = std::make_unique<FESystem<2>>(FE_Q<2>(fe.degree),
+                                               2,
+                                               FE_DGQArbitraryNodes<2>(
+                                                 QGauss<1>(fe.degree)),
+                                               1);
+        dof_handler_out.distribute_dofs(*fe_out);
+        field.reinit(dof_handler_out.n_dofs());
+        const QGauss<2>             reduced(fe.degree);
+        FEValues<2>                 values(fe,
+                           reduced,
+                           update_values | update_gradients
+                             | update_quadrature_points);
+        std::vector<Vector<double>> u(reduced.size(), Vector<double>(2));
+        std::vector<std::vector<Tensor<1, 2>>> grad(
+          reduced.size(), std::vector<Tensor<1, 2>>(2));
+        const auto &volumetric_element = fe_out->base_element(1);
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell()),
+          dofs_out(fe_out->n_dofs_per_cell());
+        auto cell_out = dof_handler_out.begin_active();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            values.reinit(cell);
+            values.get_function_values(solution, u);
+            values.get_function_gradients(solution, grad);
+            cell->get_dof_indices(dofs);
+            cell_out->get_dof_indices(dofs_out);
+            for (unsigned int i = 0; i < fe_out->n_dofs_per_cell(); ++i)
+              {
+                const auto base = fe_out->system_to_base_index(i);
+                if (base.first.first == 0) // displacement component
+                  field[dofs_out[i]]
+                    = solution[dofs[fe.component_to_system_index(
+                      base.first.second, base.second)]];
+                else
+                  {
+                    // The reduced point at this node.
+                    const Point<2> node
+                      = volumetric_element
+                          .get_unit_support_points()[base.second];
+                    unsigned int q = 0;
+                    for (unsigned int k = 1; k < reduced.size(); ++k)
+                      if (reduced.point(k).distance(node)
+                          < reduced.point(q).distance(node))
+                        q = k;
+                    const Axisymmetric::Vector4 e
+                      = Axisymmetric::strain(u[q][0],
+                                             grad[q][0],
+                                             grad[q][1],
+                                             values.quadrature_point(q)[0]);
+                    field[dofs_out[i]]
+                      = body_material.lambda() * (e[0] + e[1] + e[2]);
+                  }
+              }
+            ++cell_out;
+          }
+      }
+
+    const StressPostprocessor postprocessor(body_material,
+                                            reduced_volumetric_integration);
     DataOut<2>                data_out;
-    data_out.attach_dof_handler(dof_handler);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    std::vector<std::string>  names(2, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(2,
                      DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(solution,
-                             std::vector<std::string>(2, "displacement"),
+    if (reduced_volumetric_integration)
+      {
+        names.emplace_back("volumetric_stress");
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
+    const DoFHandler<2> &handler
+      = reduced_volumetric_integration ? dof_handler_out : dof_handler;
+    const Vector<double> &data
+      = reduced_volumetric_integration ? field : solution;
+    data_out.attach_dof_handler(handler);
+    data_out.add_data_vector(data,
+                             names,
                              DataOut<2>::type_dof_data,
                              interpretation);
-    data_out.add_data_vector(solution, postprocessor);
+    data_out.add_data_vector(data, postprocessor);
     data_out.build_patches(fe.degree);
 
     std::ofstream out(filename);

@@ -203,9 +203,11 @@ namespace coaxfit
                         "removes volumetric locking of low degrees for nearly "
                         "incompressible materials (nu -> 0.5; see "
                         "benchmarks/stress). The contact pressure comes from "
-                        "reactions, so it is unaffected by the pressure "
-                        "oscillations that the stresses of the VTU may show "
-                        "with reduced.");
+                        "reactions; the VTU stresses take their volumetric "
+                        "part from the reduced points (field "
+                        "volumetric_stress), which is accurate for FE_Q(2) "
+                        "and up; FE_Q(1) gives one value per cell, off by up "
+                        "to 20 % next to the axis at nu = 0.4999.");
     }
     prm.leave_subsection();
 

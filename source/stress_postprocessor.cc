@@ -3,8 +3,10 @@
 
 namespace coaxfit
 {
-  StressPostprocessor::StressPostprocessor(const Material &material)
+  StressPostprocessor::StressPostprocessor(const Material &material,
+                                           const bool      volumetric_component)
     : material(material)
+    , volumetric_component(volumetric_component)
   {}
 
 
@@ -14,14 +16,24 @@ namespace coaxfit
     const DataPostprocessorInputs::Vector<2> &inputs,
     std::vector<Vector<double>>              &computed_quantities) const
   {
+    // Without lambda (nu = 0, same mu) when the volumetric part is given.
+    Material shear_only = material;
+    if (volumetric_component)
+      {
+        shear_only.E  = 2. * material.mu();
+        shear_only.nu = 0.;
+      }
     for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
       {
-        const Axisymmetric::Vector4 sigma = Axisymmetric::stress(
-          material,
+        Axisymmetric::Vector4 sigma = Axisymmetric::stress(
+          shear_only,
           Axisymmetric::strain(inputs.solution_values[q][0],
                                inputs.solution_gradients[q][0],
                                inputs.solution_gradients[q][1],
                                inputs.evaluation_points[q][0]));
+        if (volumetric_component)
+          for (unsigned int c = 0; c < 3; ++c)
+            sigma[c] += inputs.solution_values[q][2];
         for (unsigned int c = 0; c < 4; ++c)
           computed_quantities[q][c] = sigma[c];
         computed_quantities[q][4] = Axisymmetric::von_mises(sigma);

@@ -11,11 +11,19 @@ namespace coaxfit
    * Computes the axisymmetric stresses sigma_rr, sigma_zz, sigma_tt (hoop),
    * sigma_rz and the von Mises stress (MPa) from the displacement (u_r, u_z)
    * for DataOut, under the names ParaView users expect.
+   *
+   * With @p volumetric_component, the field has a third component: the
+   * volumetric stress lambda tr(e), interpolated from its values at the
+   * reduced quadrature points (selective reduced integration). The stresses
+   * then take their volumetric part from it instead of from the strain at
+   * the point, whose spurious modes the reduced rule does not see (at
+   * nu = 0.4999 they showed as stresses of +-5e4 MPa with FE_Q(1)).
    */
   class StressPostprocessor : public DataPostprocessor<2>
   {
   public:
-    explicit StressPostprocessor(const Material &material);
+    explicit StressPostprocessor(const Material &material,
+                                 bool            volumetric_component = false);
 
     void
     evaluate_vector_field(
@@ -30,6 +38,7 @@ namespace coaxfit
 
   private:
     const Material material;
+    const bool     volumetric_component;
   };
 } // namespace coaxfit
 

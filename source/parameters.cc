@@ -207,7 +207,7 @@ namespace coaxfit
                         "part from the reduced points (field "
                         "volumetric_stress), which is accurate for FE_Q(2) "
                         "and up; FE_Q(1) gives one value per cell, off by up "
-                        "to 20 % next to the axis at nu = 0.4999.");
+                        "to a third of p next to the axis at nu = 0.4999.");
     }
     prm.leave_subsection();
 

@@ -6,12 +6,15 @@ discretization's free ends up to the FE error), linearity in d,
 complementarity, or a clean stop. Writes stress.csv and stress_table.md next
 to this script and prints the table.
 Usage: python3 benchmarks/stress/run_stress.py"""
+import base64
 import csv
-import math
 import os
+import re
+import struct
 import subprocess
 import sys
 import tempfile
+import zlib
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from coaxfit_run import EXE, ROOT, prm, run  # noqa: E402
@@ -77,6 +80,41 @@ for nu in [0.45, 0.49, 0.499, 0.4999]:
                       ["Material/Shaft/nu=%g" % nu, "Material/Hub/nu=%g" % nu,
                        "Mesh/Degree=%d" % degree, "Mesh/Volumetric integration=" + integration],
                       bound, "volumetric locking" if integration == "full" else "")
+
+# The stresses in the VTU at nu = 0.4999: the solid shaft of the Lame case
+# has sigma_rr = sigma_tt = -p and sigma_zz = 0 everywhere.
+def vtu_field(path, name):
+    text = open(path).read()
+    data = re.search(r'Name="%s"[^>]*>(.*?)</DataArray>' % name, text, re.S).group(1).strip()
+    header = struct.unpack("<4I", base64.b64decode(data[:24]))
+    raw = zlib.decompress(base64.b64decode(data[24:]))
+    assert header[0] == 1
+    return struct.unpack("<%df" % (len(raw) // 4), raw)
+
+
+for degree, integration in [(1, "full"), (1, "reduced"), (2, "full"), (2, "reduced")]:
+    keep = tempfile.mkdtemp(prefix="coaxfit_vtu_")
+    s, code, _ = run("lame", ["Material/Shaft/nu=0.4999", "Material/Hub/nu=0.4999",
+                              "Mesh/Degree=%d" % degree,
+                              "Mesh/Volumetric integration=" + integration,
+                              "Output/Write vtu=true"], keep=keep)
+    label = "VTU stresses, nu = 0.4999, FE_Q(%d), %s" % (degree, integration)
+    check = "shaft sigma_rr, sigma_tt = -p, sigma_zz = 0, to 1e-2 p"
+    if s is None:
+        add(label, check, "exit %d" % code, False)
+    else:
+        p = s["pressure"]["lame"]
+        shaft = os.path.join(keep, "shaft.vtu")
+        err = max(max(abs(x + p) for x in vtu_field(shaft, "sigma_rr")),
+                  max(abs(x + p) for x in vtu_field(shaft, "sigma_tt")),
+                  max(abs(x) for x in vtu_field(shaft, "sigma_zz"))) / p
+        limit = ""
+        if integration == "full" and degree == 1:
+            limit = "volumetric locking"
+        elif integration == "reduced" and degree == 1:
+            limit = "one volumetric value per cell (use FE_Q(2))"
+        add(label, check, "worst %.1e" % err, err < 1e-2, limit)
+    subprocess.run(["rm", "-rf", keep])
 
 # Stiffness contrast, two materials (the two-material Lame formula).
 for ratio in [1e-3, 1e-2, 1e-1, 1e1, 1e2, 1e3]:

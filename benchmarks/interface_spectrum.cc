@@ -54,8 +54,8 @@ main(int argc, char **argv)
         for (unsigned int j = 0; j < n; ++j)
           {
             // inward for the shaft: its compliance is -u_r per unit force
-            K1(i, j) = -condensed_shaft.get_compliance()[i][j];
-            K2(i, j) = condensed_hub.get_compliance()[i][j];
+            K1(i, j) = -condensed_shaft.get_compliance()(i, j);
+            K2(i, j) = condensed_hub.get_compliance()(i, j);
           }
       std::vector<Vector<double>> vectors(n, Vector<double>(n));
       K1.compute_generalized_eigenvalues_symmetric(K2, vectors);

@@ -112,12 +112,9 @@ namespace coaxfit
                                  | update_JxW_values);
     // Selective reduced integration: the full rule sees a material without
     // lambda (same mu), the reduced rule adds lambda tr(e_i) tr(e_j).
-    Material full_rule_material = body_material;
-    if (reduced_volumetric_integration)
-      {
-        full_rule_material.E  = 2. * body_material.mu();
-        full_rule_material.nu = 0.;
-      }
+    const Material full_rule_material = reduced_volumetric_integration ?
+                                          body_material.without_lambda() :
+                                          body_material;
 
     std::map<types::global_dof_index, unsigned int> interface_index;
     for (unsigned int i = 0; i < interface_dofs.size(); ++i)
@@ -169,9 +166,8 @@ namespace coaxfit
                 const double weight = shape_strains(reduced_values, q);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    cell_matrix(i, j) += lambda * (B[i][0] + B[i][1] + B[i][2])
-                                         * (B[j][0] + B[j][1] + B[j][2])
-                                         * weight;
+                    cell_matrix(i, j) += lambda * Axisymmetric::trace(B[i])
+                                         * Axisymmetric::trace(B[j]) * weight;
               }
           }
         cell->get_dof_indices(local_dof_indices);
@@ -357,9 +353,20 @@ namespace coaxfit
         std::vector<Vector<double>> u(reduced.size(), Vector<double>(2));
         std::vector<std::vector<Tensor<1, 2>>> grad(
           reduced.size(), std::vector<Tensor<1, 2>>(2));
-        const auto &volumetric_element = fe_out->base_element(1);
         std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell()),
           dofs_out(fe_out->n_dofs_per_cell());
+        // The reduced point at each node of the volumetric element.
+        std::vector<unsigned int> point_of_node;
+        for (const Point<2> &node :
+             fe_out->base_element(1).get_unit_support_points())
+          {
+            unsigned int q = 0;
+            for (unsigned int k = 1; k < reduced.size(); ++k)
+              if (reduced.point(k).distance(node)
+                  < reduced.point(q).distance(node))
+                q = k;
+            point_of_node.push_back(q);
+          }
         auto cell_out = dof_handler_out.begin_active();
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
@@ -377,22 +384,14 @@ namespace coaxfit
                       base.first.second, base.second)]];
                 else
                   {
-                    // The reduced point at this node.
-                    const Point<2> node
-                      = volumetric_element
-                          .get_unit_support_points()[base.second];
-                    unsigned int q = 0;
-                    for (unsigned int k = 1; k < reduced.size(); ++k)
-                      if (reduced.point(k).distance(node)
-                          < reduced.point(q).distance(node))
-                        q = k;
+                    const unsigned int          q = point_of_node[base.second];
                     const Axisymmetric::Vector4 e
                       = Axisymmetric::strain(u[q][0],
                                              grad[q][0],
                                              grad[q][1],
                                              values.quadrature_point(q)[0]);
                     field[dofs_out[i]]
-                      = body_material.lambda() * (e[0] + e[1] + e[2]);
+                      = body_material.lambda() * Axisymmetric::trace(e);
                   }
               }
             ++cell_out;

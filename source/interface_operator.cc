@@ -35,13 +35,7 @@ namespace coaxfit
 
   CondensedBody::CondensedBody(Body &body)
   {
-    const unsigned int n = body.n_interface_points();
-    FullMatrix<double> C;
-    body.interface_compliance(C);
-    compliance.assign(n, std::vector<double>(n, 0.));
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        compliance[i][j] = C(i, j);
+    body.interface_compliance(compliance);
   }
 
 
@@ -53,7 +47,7 @@ namespace coaxfit
                        std::vector<double>       &u_r,
                        std::vector<double>       &force_out)
   {
-    const unsigned int        n = compliance.size();
+    const unsigned int        n = compliance.m();
     std::vector<unsigned int> P;
     for (unsigned int i = 0; i < n; ++i)
       if (prescribed[i])
@@ -94,6 +88,6 @@ namespace coaxfit
     u_r.assign(n, 0.);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
-        u_r[i] += compliance[i][j] * force_out[j];
+        u_r[i] += compliance(i, j) * force_out[j];
   }
 } // namespace coaxfit

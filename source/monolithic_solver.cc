@@ -36,8 +36,6 @@ namespace coaxfit
     const std::vector<unsigned int> target
       = tie_targets(std::vector<bool>(shaft.get_interface_dofs().size(), true));
     DynamicSparsityPattern dsp(n, n);
-    for (unsigned int row = 0; row < n; ++row)
-      dsp.add(row, row);
     for (unsigned int row = 0; row < K1.m(); ++row)
       for (auto e = K1.begin(row); e != K1.end(row); ++e)
         dsp.add(row, e->column());
@@ -88,10 +86,6 @@ namespace coaxfit
     // right hand side); its own row keeps only a positive diagonal.
     const std::vector<bool>        &tied   = active_set.in_contact();
     const std::vector<unsigned int> target = tie_targets(tied);
-    std::vector<double>             shift(n, 0.);
-    for (unsigned int i = 0; i < dofs1.size(); ++i)
-      if (tied[i])
-        shift[n1 + dofs2[i]] = d;
 
     SparseMatrix<double> matrix(pattern);
     Vector<double>       rhs(n);
@@ -103,7 +97,8 @@ namespace coaxfit
         {
           const unsigned int r = target[n1 + row], c = n1 + e->column();
           matrix.add(r, target[c], e->value());
-          rhs[r] -= e->value() * shift[c];
+          if (target[c] != c) // tied: u_c = u_target + d
+            rhs[r] -= e->value() * d;
         }
     for (unsigned int i = 0; i < dofs1.size(); ++i)
       if (tied[i])

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cholmod.h>
-#include <map>
 #include <string>
 
 extern "C" void
@@ -81,10 +80,11 @@ namespace coaxfit
     cholmod_common  common;
     cholmod_sparse *upper    = nullptr;
     cholmod_factor *symbolic = nullptr;
-    /** The unknowns ordered last, in elimination order, if any. */
-    std::vector<types::global_dof_index> last;
-    /** The same unknowns in the order the caller gave them. */
-    std::vector<types::global_dof_index> caller_last;
+    /**
+     * For the unknowns analyze() was asked to order last, in the caller's
+     * order: their position within the trailing block of the factor.
+     */
+    std::vector<std::size_t> trailing_position;
   };
 
 
@@ -131,10 +131,9 @@ namespace coaxfit
         row_index[k++]           = row;
         column_start[column + 1] = k;
       });
-    impl->fill_values(matrix);
 
-    impl->last.clear();
-    impl->caller_last = last;
+    // The analysis reads the pattern only; factorize() fills the values.
+    impl->trailing_position.clear();
     if (last.empty())
       impl->symbolic = cholmod_l_analyze(impl->upper, &common);
     else
@@ -168,13 +167,17 @@ namespace coaxfit
           {
             const auto *perm
               = static_cast<const SuiteSparse_long *>(impl->symbolic->Perm);
-            for (std::size_t k = n - last.size(); k < n; ++k)
+            const std::size_t        first = n - last.size();
+            std::vector<std::size_t> position(n);
+            for (std::size_t k = first; k < n; ++k)
               {
                 if (member[perm[k]] != 1)
                   throw SolverError("CHOLMOD did not keep the constrained "
                                     "ordering");
-                impl->last.push_back(perm[k]);
+                position[perm[k]] = k - first;
               }
+            for (const auto i : last)
+              impl->trailing_position.push_back(position[i]);
           }
       }
     if (impl->symbolic == nullptr)
@@ -234,8 +237,9 @@ namespace coaxfit
   {
     const cholmod_factor *L = factor.L;
     Assert(L->is_super && L->is_ll, ExcInternalError());
-    Assert(!impl->last.empty(), ExcMessage("analyze() was given no unknowns"));
-    const int         n     = impl->last.size();
+    const std::vector<std::size_t> &p = impl->trailing_position;
+    Assert(!p.empty(), ExcMessage("analyze() was given no unknowns"));
+    const int         n     = p.size();
     const std::size_t first = L->n - n;
 
     // L_SS, column major, from the supernodes holding columns first..n-1:
@@ -270,12 +274,6 @@ namespace coaxfit
                         + ") inverting the interface Schur complement");
 
     // Back to the caller's numbering of the unknowns.
-    std::map<types::global_dof_index, unsigned int> position;
-    for (unsigned int a = 0; a < impl->last.size(); ++a)
-      position[impl->last[a]] = a;
-    std::vector<std::size_t> p(n);
-    for (int a = 0; a < n; ++a)
-      p[a] = position.at(impl->caller_last[a]);
     inverse.reinit(n, n);
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b)

@@ -17,12 +17,8 @@ namespace coaxfit
     std::vector<Vector<double>>              &computed_quantities) const
   {
     // Without lambda (nu = 0, same mu) when the volumetric part is given.
-    Material shear_only = material;
-    if (volumetric_component)
-      {
-        shear_only.E  = 2. * material.mu();
-        shear_only.nu = 0.;
-      }
+    const Material shear_only
+      = volumetric_component ? material.without_lambda() : material;
     for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
       {
         Axisymmetric::Vector4 sigma = Axisymmetric::stress(

@@ -38,13 +38,20 @@ namespace coaxfit
       return {{grad_u_r[0], grad_u_z[1], e_tt, grad_u_r[1] + grad_u_z[0]}};
     }
 
+    /** Volumetric strain e_rr + e_zz + e_tt. */
+    inline double
+    trace(const Vector4 &e)
+    {
+      return e[0] + e[1] + e[2];
+    }
+
     /** Hooke's law: stress of a strain for an isotropic material. */
     inline Vector4
     stress(const Material &material, const Vector4 &e)
     {
       const double lambda = material.lambda();
       const double mu     = material.mu();
-      const double trace  = e[0] + e[1] + e[2];
+      const double trace  = Axisymmetric::trace(e);
       return {{lambda * trace + 2. * mu * e[0],
                lambda * trace + 2. * mu * e[1],
                lambda * trace + 2. * mu * e[2],

@@ -1,6 +1,7 @@
 #ifndef coaxfit_interface_operator_h
 #define coaxfit_interface_operator_h
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <map>
@@ -65,8 +66,8 @@ namespace coaxfit
           std::vector<double>       &u_r,
           std::vector<double>       &force_out) override;
 
-    /** The compliance C (row-wise): C[i][j] = u_r,i for a unit force at j. */
-    const std::vector<std::vector<double>> &
+    /** The compliance C: C(i, j) = u_r,i for a unit force at j. */
+    const FullMatrix<double> &
     get_compliance() const
     {
       return compliance;
@@ -80,7 +81,7 @@ namespace coaxfit
     }
 
   private:
-    std::vector<std::vector<double>> compliance; ///< C, row-wise
+    FullMatrix<double> compliance; ///< C
     std::map<std::vector<bool>, std::unique_ptr<LAPACKFullMatrix<double>>>
                  factorizations;
     unsigned int factorization_count = 0;

@@ -33,6 +33,16 @@ namespace coaxfit
     {
       return E / (2. * (1. + nu));
     }
+
+    /**
+     * The same mu without lambda (nu = 0): the deviatoric-like part of a
+     * selective reduced integration, whose lambda part is added separately.
+     */
+    Material
+    without_lambda() const
+    {
+      return {2. * mu(), 0.};
+    }
   };
 
   /**

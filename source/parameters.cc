@@ -383,14 +383,14 @@ namespace coaxfit
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
-    prm.enter_subsection("Shaft");
-    shaft.E  = prm.get_double("E");
-    shaft.nu = prm.get_double("nu");
-    prm.leave_subsection();
-    prm.enter_subsection("Hub");
-    hub.E  = prm.get_double("E");
-    hub.nu = prm.get_double("nu");
-    prm.leave_subsection();
+    for (const auto &[body, material] :
+         {std::pair<std::string, Material *>{"Shaft", &shaft}, {"Hub", &hub}})
+      {
+        prm.enter_subsection(body);
+        material->E  = prm.get_double("E");
+        material->nu = prm.get_double("nu");
+        prm.leave_subsection();
+      }
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh");

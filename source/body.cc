@@ -212,7 +212,6 @@ namespace coaxfit
     if (found != factorizations.end())
       return *found->second;
 
-    Timer timer;
     // K with the rows and columns of the prescribed points eliminated
     // symmetrically; the diagonal entries stay.
     SparseMatrix<double> matrix(sparsity_pattern);
@@ -239,7 +238,6 @@ namespace coaxfit
       }
     auto factor = cholesky.factorize(matrix);
     ++factorization_count;
-    factorization_seconds += timer.wall_time();
 
     if (factorization_order.size() >= max_cached_factorizations)
       {

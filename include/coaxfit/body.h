@@ -1,7 +1,6 @@
 #ifndef coaxfit_body_h
 #define coaxfit_body_h
 
-#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
@@ -211,13 +210,6 @@ namespace coaxfit
       return solve_count;
     }
 
-    /** Wall time spent factorizing (s). */
-    double
-    factorization_time() const
-    {
-      return factorization_seconds;
-    }
-
     /** Largest number of factorizations kept at once. */
     static constexpr unsigned int max_cached_factorizations = 4;
 
@@ -249,9 +241,8 @@ namespace coaxfit
     std::map<std::vector<bool>, std::unique_ptr<SparseCholesky::Factor>>
                                   factorizations;
     std::deque<std::vector<bool>> factorization_order;
-    unsigned int                  factorization_count   = 0;
-    unsigned int                  solve_count           = 0;
-    double                        factorization_seconds = 0.;
+    unsigned int                  factorization_count = 0;
+    unsigned int                  solve_count         = 0;
   };
 } // namespace coaxfit
 

@@ -9,12 +9,12 @@ and tabulates the eigenvalue range, the best constant alpha
 1/(1 + sqrt(lmin lmax)), the convergent alpha range and whether the paper's
 alpha* converges. Writes benchmarks/alpha_spectrum.csv and prints markdown.
 """
-import csv
 import os
 import re
 import subprocess
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from coaxfit_run import ROOT, markdown_table, paper_alpha, write_csv
+
 EXE = os.path.join(ROOT, "build", "coaxfit-spectrum")
 MESHES = {
     "paper-like Q1 uniform": ["Mesh/Degree=1", "Mesh/Grading ratio=1",
@@ -38,20 +38,16 @@ def spectrum(case, extra):
 rows = []
 for m in range(1, 19):
     case = "variant_%02d" % m
-    paper = float(re.search(r"set Alpha\s+= ([0-9.]+)",
-                            open(os.path.join(ROOT, "prm", case + ".prm")).read()).group(1))
+    paper = paper_alpha(case)
     for mesh, extra in MESHES.items():
         lo, hi, best, rate, window, prate = spectrum(case, extra)
         rows.append([m, mesh, "%.3g" % lo, "%.4g" % hi, paper, "%.3f" % best,
                      "%.3f" % rate, window, "%.3f" % prate,
                      "yes" if prate < 1 else "no"])
-with open(os.path.join(ROOT, "benchmarks", "alpha_spectrum.csv"), "w", newline="") as f:
-    w = csv.writer(f)
-    w.writerow(["variant", "mesh", "lambda_min", "lambda_max", "paper_alpha",
-                "best_constant_alpha", "best_contraction", "convergent_alpha_range",
-                "paper_alpha_contraction", "paper_alpha_converges"])
-    w.writerows(rows)
-print("| m | mesh | lambda min | lambda max | paper alpha* | best alpha | its contraction | convergent range | paper alpha contraction | converges |")
-print("|---|---|---|---|---|---|---|---|---|---|")
-for r in rows:
-    print("| " + " | ".join(str(x) for x in r) + " |")
+write_csv(os.path.join(ROOT, "benchmarks", "alpha_spectrum.csv"),
+          ["variant", "mesh", "lambda_min", "lambda_max", "paper_alpha",
+           "best_constant_alpha", "best_contraction", "convergent_alpha_range",
+           "paper_alpha_contraction", "paper_alpha_converges"], rows)
+print(markdown_table(["m", "mesh", "lambda min", "lambda max", "paper alpha*", "best alpha",
+                      "its contraction", "convergent range", "paper alpha contraction",
+                      "converges"], rows), end="")

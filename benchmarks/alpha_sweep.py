@@ -10,7 +10,7 @@ paper's. Usage: python3 benchmarks/alpha_sweep.py"""
 import csv
 import os
 
-from coaxfit_run import CASES, ROOT, paper_alpha, run
+from coaxfit_run import CASES, ROOT, paper_alpha, run, write_csv
 
 ALPHAS = [0.002, 0.004, 0.006, 0.008, 0.01, 0.013, 0.016, 0.02, 0.025, 0.03,
           0.04, 0.05, 0.06, 0.08, 0.1, 0.12, 0.15, 0.2, 0.25, 0.3, 0.35,
@@ -43,10 +43,8 @@ for case in CASES:
             rows.append([case, mesh, alpha, to_2, to_8])
         print(case, mesh, "done", flush=True)
 
-with open(os.path.join(ROOT, "benchmarks", "alpha_sweep.csv"), "w", newline="") as f:
-    w = csv.writer(f)
-    w.writerow(["case", "mesh", "alpha", "steps_to_1e-2", "steps_to_1e-8"])
-    w.writerows(rows)
+write_csv(os.path.join(ROOT, "benchmarks", "alpha_sweep.csv"),
+          ["case", "mesh", "alpha", "steps_to_1e-2", "steps_to_1e-8"], rows)
 
 
 def best(case, mesh, column):

@@ -1,7 +1,10 @@
 """Shared helper of the benchmark scripts: run build/coaxfit on a prm file
-with --set overrides and return its summary.json (None if it failed)."""
+with --set overrides and return its summary.json (None if it failed); write
+result tables as CSV and as markdown."""
+import csv
 import json
 import os
+import re
 import subprocess
 import tempfile
 
@@ -44,6 +47,21 @@ def steps_to(convergence_history, criterion):
 
 
 def paper_alpha(case):
-    import re
     with open(prm(case)) as f:
         return float(re.search(r"set Alpha\s+= ([0-9.]+)", f.read()).group(1))
+
+
+def write_csv(path, header, rows, append=False):
+    """Write (or append, without the header) rows as CSV."""
+    with open(path, "a" if append else "w", newline="") as f:
+        w = csv.writer(f)
+        if not append:
+            w.writerow(header)
+        w.writerows(rows)
+
+
+def markdown_table(header, rows):
+    """Rows as a markdown table (with a trailing newline)."""
+    lines = ["| " + " | ".join(str(x) for x in header) + " |", "|---" * len(header) + "|"]
+    lines += ["| " + " | ".join(str(x) for x in r) + " |" for r in rows]
+    return "\n".join(lines) + "\n"

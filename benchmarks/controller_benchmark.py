@@ -3,10 +3,9 @@
 alpha controller, default settings otherwise (shipped mesh, unilateral
 contact). Writes controller_benchmark.csv and prints a markdown table.
 Usage: python3 benchmarks/controller_benchmark.py"""
-import csv
 import os
 
-from coaxfit_run import CASES, ROOT, run
+from coaxfit_run import CASES, ROOT, markdown_table, run, write_csv
 
 CONTROLLERS = ["fixed", "winkler", "pointwise", "aitken", "iqn-ils"]
 rows = []
@@ -20,11 +19,6 @@ for case in CASES:
             row.append("fails")
     rows.append(row)
     print(row, flush=True)
-with open(os.path.join(ROOT, "benchmarks", "controller_benchmark.csv"), "w", newline="") as f:
-    w = csv.writer(f)
-    w.writerow(["case"] + CONTROLLERS)
-    w.writerows(rows)
-print("\n| variant | " + " | ".join(CONTROLLERS) + " |")
-print("|---" * (len(CONTROLLERS) + 1) + "|")
-for r in rows:
-    print("| " + " | ".join(r) + " |")
+write_csv(os.path.join(ROOT, "benchmarks", "controller_benchmark.csv"), ["case"] + CONTROLLERS, rows)
+print()
+print(markdown_table(["variant"] + CONTROLLERS, rows), end="")

@@ -4,6 +4,8 @@ Usage: python3 benchmarks/make_readme.py   (after benchmarks/run_all.sh)"""
 import csv
 import os
 
+from coaxfit_run import markdown_table
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -15,11 +17,7 @@ def table(name, columns=None):
         rows = list(csv.reader(f))
     head, body = rows[0], rows[1:]
     idx = range(len(head)) if columns is None else [head.index(c) for c in columns]
-    out = "| " + " | ".join(head[i] for i in idx) + " |\n"
-    out += "|" + "---|" * len(idx) + "\n"
-    for r in body:
-        out += "| " + " | ".join(r[i] for i in idx) + " |\n"
-    return out
+    return markdown_table([head[i] for i in idx], [[r[i] for i in idx] for r in body])
 
 
 def text(name):

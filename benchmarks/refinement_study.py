@@ -9,11 +9,10 @@ benchmarks/refinement_study.csv and prints a markdown table.
 Usage: python3 benchmarks/refinement_study.py [max_refinement [case...]]
 (with cases given, their rows are appended to the CSV)
 """
-import csv
 import os
 import sys
 
-from coaxfit_run import ROOT, run
+from coaxfit_run import ROOT, markdown_table, run, write_csv
 
 finest = int(sys.argv[1]) if len(sys.argv) > 1 else 4
 cases = sys.argv[2:] or ["lame"] + ["variant_%02d" % m for m in range(1, 19)]
@@ -33,13 +32,9 @@ for case in cases:
         print(rows[-1], flush=True)
 path = os.path.join(ROOT, "benchmarks", "refinement_study.csv")
 append = len(sys.argv) > 2 and os.path.exists(path)
-with open(path, "a" if append else "w", newline="") as f:
-    w = csv.writer(f)
-    if not append:
-        w.writerow(["case", "refinement", "dofs", "p_mid_MPa", "p_mean_MPa",
-                    "rel_change_mid_vs_finest", "rel_change_mean_vs_finest", "steps"])
-    w.writerows(rows)
-print("\n| case | ref | DoFs | p(0) MPa | mean MPa | change of p(0) vs finest | change of mean vs finest | steps |")
-print("|---|---|---|---|---|---|---|---|")
-for r in rows:
-    print("| " + " | ".join(str(x) for x in r) + " |")
+write_csv(path, ["case", "refinement", "dofs", "p_mid_MPa", "p_mean_MPa",
+                 "rel_change_mid_vs_finest", "rel_change_mean_vs_finest", "steps"],
+          rows, append)
+print()
+print(markdown_table(["case", "ref", "DoFs", "p(0) MPa", "mean MPa", "change of p(0) vs finest",
+                      "change of mean vs finest", "steps"], rows), end="")

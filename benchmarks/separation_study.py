@@ -14,7 +14,7 @@ import csv
 import os
 import sys
 
-from coaxfit_run import ROOT, run
+from coaxfit_run import ROOT, markdown_table, run, write_csv
 
 BETAS = [0.90, 0.92, 0.93, 0.94, 0.95, 0.96, 0.97, 0.975, 0.98, 0.9825,
          0.985, 0.9875, 0.99, 0.9925, 0.995]
@@ -68,15 +68,13 @@ for mesh in MESHES:
             onsets[mesh] = b0 + (b1 - b0) * p0 / (p0 - p1)
             break
 
-with open(os.path.join(ROOT, "benchmarks", "separation_study.csv"), "w", newline="") as f:
-    w = csv.writer(f)
-    w.writerow(["mesh", "beta1", "bilateral_min_pressure_MPa", "z_of_min_mm",
-                "separated_length_mm", "separated_zones_mm", "steps", "active_set_changes"])
-    w.writerows(rows)
-print("\n| mesh | beta1 | bilateral min p (MPa) | at z (mm) | separated length (mm) | separated zones (mm) | steps | active set changes |")
-print("|---|---|---|---|---|---|---|---|")
-for r in rows:
-    print("| " + " | ".join(str(x) for x in r) + " |")
+write_csv(os.path.join(ROOT, "benchmarks", "separation_study.csv"),
+          ["mesh", "beta1", "bilateral_min_pressure_MPa", "z_of_min_mm",
+           "separated_length_mm", "separated_zones_mm", "steps", "active_set_changes"], rows)
+print()
+print(markdown_table(["mesh", "beta1", "bilateral min p (MPa)", "at z (mm)",
+                      "separated length (mm)", "separated zones (mm)", "steps",
+                      "active set changes"], rows), end="")
 lines = ["Onset of separation (the bilateral minimum pressure away from the "
          "corner crosses zero; linear interpolation between the sampled beta1):", ""]
 for mesh in MESHES:

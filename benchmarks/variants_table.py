@@ -5,11 +5,10 @@ on the shipped mesh. Records iterations to max|du|/d < 1e-2 and to the
 tolerance 1e-8, mid-plane, mean, peak and minimum pressure and separated
 zones. Writes benchmarks/variants_table.csv and prints markdown.
 Usage: python3 benchmarks/variants_table.py"""
-import csv
 import os
 import re
 
-from coaxfit_run import ROOT, run
+from coaxfit_run import ROOT, markdown_table, run, write_csv
 
 MODES = {
     "paper process (fixed alpha*, bilateral)": ["Coupling/Alpha controller=fixed",
@@ -37,13 +36,11 @@ for case in ["lame"] + ["variant_%02d" % m for m in range(1, 19)]:
                      "%.2f" % s["pressure"]["lame"]])
         print(rows[-1], flush=True)
 
-with open(os.path.join(ROOT, "benchmarks", "variants_table.csv"), "w", newline="") as f:
-    w = csv.writer(f)
-    w.writerow(["case", "mode", "converged", "steps_to_1e-2", "steps_to_tol",
-                "p_mid_MPa", "p_mean_MPa", "p_max_MPa_at_z", "p_min_MPa_at_z",
-                "separated_zones_mm", "p_lame_MPa"])
-    w.writerows(rows)
-print("\n| case | mode | converged | steps to 1e-2 | steps to 1e-8 | p(0) MPa | mean MPa | max MPa @ z mm | min MPa @ z mm | separated zones mm | Lame MPa |")
-print("|---|---|---|---|---|---|---|---|---|---|---|")
-for r in rows:
-    print("| " + " | ".join(str(x) for x in r) + " |")
+write_csv(os.path.join(ROOT, "benchmarks", "variants_table.csv"),
+          ["case", "mode", "converged", "steps_to_1e-2", "steps_to_tol", "p_mid_MPa",
+           "p_mean_MPa", "p_max_MPa_at_z", "p_min_MPa_at_z", "separated_zones_mm",
+           "p_lame_MPa"], rows)
+print()
+print(markdown_table(["case", "mode", "converged", "steps to 1e-2", "steps to 1e-8", "p(0) MPa",
+                      "mean MPa", "max MPa @ z mm", "min MPa @ z mm", "separated zones mm",
+                      "Lame MPa"], rows), end="")

@@ -11,7 +11,6 @@ remaining levels of a case once one of its runs passes 60 s.
 Writes work_precision.csv, work_precision_summary.md, work_precision.png
 and prints a markdown table.
 Usage: python3 benchmarks/work_precision.py [max_level=5]"""
-import csv
 import json
 import math
 import os
@@ -19,7 +18,7 @@ import subprocess
 import sys
 import tempfile
 
-from coaxfit_run import EXE, ROOT, prm
+from coaxfit_run import EXE, ROOT, markdown_table, prm, write_csv
 
 CASES = ["lame", "variant_05", "variant_17"]
 METHODS = {"staggered": [],
@@ -102,14 +101,9 @@ for case in CASES:
 header = ["case", "method", "level", "dofs", "steps", "setup_s", "factorization_s",
           "condensation_s", "coupling_s", "total_s", "peak_memory_MB", "error_mid_plane",
           "error_mean", "peak_pressure_MPa"]
-with open(os.path.join(ROOT, "benchmarks", "work_precision.csv"), "w", newline="") as f:
-    w = csv.writer(f)
-    w.writerow(header)
-    w.writerows(rows)
-print("\n| " + " | ".join(header) + " |")
-print("|---" * len(header) + "|")
-for r in rows:
-    print("| " + " | ".join(str(x) for x in r) + " |")
+write_csv(os.path.join(ROOT, "benchmarks", "work_precision.csv"), header, rows)
+print()
+print(markdown_table(header, rows), end="")
 print("\n".join(summary_lines))
 with open(os.path.join(ROOT, "benchmarks", "work_precision_summary.md"), "w") as f:
     f.write("\n".join(summary_lines) + "\n")

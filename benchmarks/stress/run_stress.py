@@ -7,7 +7,6 @@ complementarity, or a clean stop. Writes stress.csv and stress_table.md next
 to this script and prints the table.
 Usage: python3 benchmarks/stress/run_stress.py"""
 import base64
-import csv
 import os
 import re
 import struct
@@ -17,7 +16,7 @@ import tempfile
 import zlib
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from coaxfit_run import EXE, ROOT, prm, run  # noqa: E402
+from coaxfit_run import EXE, markdown_table, prm, run, write_csv  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 rows = []
@@ -179,14 +178,10 @@ add("bad alpha (variant 13, fixed 0.5)", "exit 2, one-line message, no NaN/Inf i
     and not nan_files)
 subprocess.run(["rm", "-rf", out])
 
-with open(os.path.join(HERE, "stress.csv"), "w", newline="") as f:
-    w = csv.writer(f)
-    w.writerow(["case", "check", "figure", "result"])
-    w.writerows(rows)
+header = ["case", "check", "figure", "result"]
+write_csv(os.path.join(HERE, "stress.csv"), header, rows)
 with open(os.path.join(HERE, "stress_table.md"), "w") as f:
-    f.write("| case | check | figure | result |\n|---|---|---|---|\n")
-    for r in rows:
-        f.write("| " + " | ".join(r) + " |\n")
+    f.write(markdown_table(header, rows))
 failed = [r for r in rows if r[3] == "FAIL"]
 print("\n%d cases, %d pass, %d known limits, %d FAIL"
       % (len(rows), sum(r[3] == "pass" for r in rows),

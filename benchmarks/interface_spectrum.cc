@@ -9,7 +9,7 @@
 // (4.17) of the paper, so a constant alpha converges iff |N| < 1 for every
 // lambda, and the best one is alpha* = 1 / (1 + sqrt(lambda_min lambda_max)).
 //
-// Usage: coaxfit-spectrum FILE.prm [Section/Name=value]...
+// Usage: coaxfit-spectrum [--set Section/Name=value]... FILE.prm
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -27,28 +27,41 @@ main(int argc, char **argv)
   using namespace coaxfit;
   try
     {
-      if (argc < 2)
-        throw InputError(
-          "usage: coaxfit-spectrum FILE.prm [Section/Name=value]...");
+      const std::string usage =
+        "usage: coaxfit-spectrum [--set Section/Name=value]... FILE.prm";
       std::vector<std::pair<std::string, std::string>> overrides;
-      for (int i = 2; i < argc; ++i)
+      std::string                                      filename;
+      for (int i = 1; i < argc; ++i)
         {
-          const std::string s  = argv[i];
-          const auto        eq = s.find('=');
-          if (eq == std::string::npos)
-            throw InputError("expected Section/Name=value, got " + s);
-          overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+          const std::string arg = argv[i];
+          if (arg == "--set" && i + 1 < argc)
+            {
+              const std::string s  = argv[++i];
+              const auto        eq = s.find('=');
+              if (eq == std::string::npos)
+                throw InputError("expected Section/Name=value, got " + s);
+              overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+            }
+          else if (filename.empty() && arg[0] != '-')
+            filename = arg;
+          else
+            throw InputError(usage);
         }
-      const Parameters p = read_parameters(argv[1], overrides);
-      Body shaft("shaft", CoaxialFit::shaft_geometry(p), p.shaft, p.degree);
-      Body hub("hub", CoaxialFit::hub_geometry(p), p.hub, p.degree);
-      for (Body *b : {&shaft, &hub})
+      if (filename.empty())
+        throw InputError(usage);
+      const Parameters p = read_parameters(filename, overrides);
+      // The same bodies as a run of coaxfit (mesh, degree, integration).
+      const auto shaft = make_body(p, true);
+      const auto hub   = make_body(p, false);
+      for (BodyDiscretization *b : {shaft.get(), hub.get()})
         {
           b->setup_system();
           b->assemble_system();
         }
-      const unsigned int       n = shaft.n_interface_points();
-      const CondensedBody      condensed_shaft(shaft), condensed_hub(hub);
+      const unsigned int  n = shaft->n_interface_points();
+      BodySolver          shaft_solver(*shaft), hub_solver(*hub);
+      const CondensedBody condensed_shaft(shaft_solver),
+        condensed_hub(hub_solver);
       LAPACKFullMatrix<double> K1(n, n), K2(n, n);
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int j = 0; j < n; ++j)
@@ -83,8 +96,8 @@ main(int argc, char **argv)
       const double best = 1. / (1. + std::sqrt(lambda.front() * lambda.back()));
 
       std::cout << std::setprecision(4) << "case " << p.case_name << ": " << n
-                << " interface points, FE_Q(" << p.degree << "), refinement "
-                << p.global_refinements << '\n'
+                << " interface points, FE_Q(" << p.mesh.degree << "), refinement "
+                << p.mesh.global_refinements << '\n'
                 << "  eigenvalues of K1 K2^-1 in [" << lambda.front() << ", "
                 << lambda.back() << "]\n"
                 << "  best constant alpha " << best << ", contraction per "
@@ -94,8 +107,8 @@ main(int argc, char **argv)
       else
         std::cout << "  constant alpha converges for " << lo
                   << " <= alpha <= " << hi << '\n';
-      std::cout << "  alpha = " << p.alpha << " (Coupling/Alpha): contraction "
-                << rate(p.alpha) << (rate(p.alpha) < 1. ? "" : " (diverges)")
+      std::cout << "  alpha = " << p.coupling.alpha << " (Coupling/Alpha): contraction "
+                << rate(p.coupling.alpha) << (rate(p.coupling.alpha) < 1. ? "" : " (diverges)")
                 << '\n';
       return 0;
     }

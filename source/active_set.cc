@@ -15,7 +15,7 @@ namespace coaxfit
 
 
   unsigned int
-  UnilateralActiveSet::clamp(std::vector<double> &force) const
+  UnilateralActiveSet::clamp(Vector<double> &force) const
   {
     unsigned int n = 0;
     if (is_enabled && mode == Update::every_step)
@@ -31,8 +31,8 @@ namespace coaxfit
 
 
   bool
-  UnilateralActiveSet::update(const std::vector<double> &force,
-                              const std::vector<double> &gap)
+  UnilateralActiveSet::update(const Vector<double> &force,
+                              const Vector<double> &gap)
   {
     if (!is_enabled)
       return false;

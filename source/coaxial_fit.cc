@@ -1,16 +1,14 @@
 #include <deal.II/base/multithread_info.h>
-#include <deal.II/base/timer.h>
 
-#include <coaxfit/alpha_controller.h>
 #include <coaxfit/blas_threads.h>
 #include <coaxfit/coaxial_fit.h>
-#include <coaxfit/contact_interface.h>
+#include <coaxfit/concurrency.h>
 #include <coaxfit/input_error.h>
-#include <coaxfit/results.h>
+#include <coaxfit/monolithic_solver.h>
+#include <coaxfit/result_writers.h>
 #include <coaxfit/staggered_coupling.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -22,11 +20,11 @@ namespace coaxfit
     common_mesh_settings(const Parameters &parameters)
     {
       BodyGeometry g;
-      g.contact_length     = parameters.contact_length();
-      g.axial_cells        = parameters.axial_cells;
-      g.radial_cells       = parameters.radial_cells;
-      g.grading_ratio      = parameters.grading_ratio;
-      g.global_refinements = parameters.global_refinements;
+      g.contact_length     = parameters.geometry.contact_length();
+      g.axial_cells        = parameters.mesh.axial_cells;
+      g.radial_cells       = parameters.mesh.radial_cells;
+      g.grading_ratio      = parameters.mesh.grading_ratio;
+      g.global_refinements = parameters.mesh.global_refinements;
       return g;
     }
 
@@ -36,21 +34,21 @@ namespace coaxfit
       std::error_code error;
       std::filesystem::create_directories(directory, error);
       if (error || !std::filesystem::is_directory(directory))
-        throw InputError("parameter Output/Directory = " + directory
-                         + ": cannot create the directory (" + error.message()
-                         + ")");
+        throw InputError("parameter Output/Directory = " + directory +
+                         ": cannot create the directory (" + error.message() +
+                         ")");
     }
   } // namespace
 
 
 
   BodyGeometry
-  CoaxialFit::shaft_geometry(const Parameters &parameters)
+  shaft_geometry(const Parameters &parameters)
   {
     BodyGeometry g            = common_mesh_settings(parameters);
-    g.r_inner                 = parameters.R0;
-    g.r_outer                 = parameters.R1;
-    g.length                  = parameters.L1;
+    g.r_inner                 = parameters.geometry.R0;
+    g.r_outer                 = parameters.geometry.R1;
+    g.length                  = parameters.geometry.L1;
     g.contact_at_outer_radius = true;
     return g;
   }
@@ -58,30 +56,39 @@ namespace coaxfit
 
 
   BodyGeometry
-  CoaxialFit::hub_geometry(const Parameters &parameters)
+  hub_geometry(const Parameters &parameters)
   {
     BodyGeometry g            = common_mesh_settings(parameters);
-    g.r_inner                 = parameters.R1;
-    g.r_outer                 = parameters.R2;
-    g.length                  = parameters.L2;
+    g.r_inner                 = parameters.geometry.R1;
+    g.r_outer                 = parameters.geometry.R2;
+    g.length                  = parameters.geometry.L2;
     g.contact_at_outer_radius = false;
     return g;
   }
 
 
 
-  CoaxialFit::CoaxialFit(const Parameters &parameters)
+  std::unique_ptr<BodyDiscretization>
+  make_body(const Parameters &parameters, const bool shaft)
+  {
+    return std::make_unique<BodyDiscretization>(
+      shaft ? shaft_geometry(parameters) : hub_geometry(parameters),
+      shaft ? parameters.shaft : parameters.hub,
+      parameters.mesh.degree,
+      parameters.mesh.reduced_volumetric_integration());
+  }
+
+
+
+  CoaxialFit::CoaxialFit(const Parameters &parameters,
+                         std::ostream     &out,
+                         const bool        verbose)
     : parameters(parameters)
-    , shaft("shaft",
-            shaft_geometry(parameters),
-            parameters.shaft,
-            parameters.degree,
-            parameters.reduced_volumetric_integration)
-    , hub("hub",
-          hub_geometry(parameters),
-          parameters.hub,
-          parameters.degree,
-          parameters.reduced_volumetric_integration)
+    , out(out)
+    , pcout(out, verbose)
+    , shaft(make_body(parameters, true))
+    , hub(make_body(parameters, false))
+    , timer(out, TimerOutput::never, TimerOutput::wall_times)
   {}
 
 
@@ -89,13 +96,18 @@ namespace coaxfit
   void
   CoaxialFit::setup_system()
   {
-    Timer timer;
-    shaft.setup_system();
-    hub.setup_system();
-    shaft.assemble_system();
-    hub.assemble_system();
-    interface    = std::make_unique<ContactInterface>(shaft, hub, parameters.d);
-    timing.setup = timer.wall_time();
+    {
+      TimerOutput::Scope scope(timer, "setup");
+      shaft->setup_system();
+      hub->setup_system();
+      shaft->assemble_system();
+      hub->assemble_system();
+      interface = std::make_unique<ContactInterface>(*shaft,
+                                                     *hub,
+                                                     parameters.geometry.d);
+      shaft_solver = std::make_unique<BodySolver>(*shaft);
+      hub_solver   = std::make_unique<BodySolver>(*hub);
+    }
 
     // The free body's factorization is needed by every staggered run (the
     // Neumann answer, the compliance of the condensed operator, the final
@@ -103,19 +115,49 @@ namespace coaxfit
     // with prescribed points are made when the coupling first asks for
     // them (the condensed operator never does). The monolithic solver
     // factorizes its own system.
-    if (parameters.solver_method == "monolithic")
+    if (parameters.solver.method == SolverMethod::monolithic)
       {
         set_blas_threads(MultithreadInfo::n_cores());
         return;
       }
     set_blas_threads(1);
-    timer.restart();
+    TimerOutput::Scope      scope(timer, "factorization");
     const std::vector<bool> none(interface->n_points(), false);
-    Threads::Task<void>     task
-      = Threads::new_task([&]() { shaft.factorize(none); });
-    hub.factorize(none);
-    task.join();
-    timing.factorization = timer.wall_time();
+    concurrently([&]() { shaft_solver->factorize(none); },
+                 [&]() { hub_solver->factorize(none); });
+  }
+
+
+
+  std::unique_ptr<InterfaceSolver>
+  CoaxialFit::make_staggered_coupling()
+  {
+    InterfaceOperator *shaft_operator = shaft_solver.get();
+    InterfaceOperator *hub_operator   = hub_solver.get();
+    if (use_condensed_operator())
+      {
+        TimerOutput::Scope scope(timer, "condensation");
+        concurrently(
+          [&]() {
+            condensed_shaft = std::make_unique<CondensedBody>(*shaft_solver);
+          },
+          [&]() {
+            condensed_hub = std::make_unique<CondensedBody>(*hub_solver);
+          });
+        shaft_operator = condensed_shaft.get();
+        hub_operator   = condensed_hub.get();
+      }
+    return std::make_unique<StaggeredCoupling>(
+      *shaft_solver,
+      *hub_solver,
+      *shaft_operator,
+      *hub_operator,
+      *interface,
+      parameters.coupling,
+      UnilateralActiveSet(interface->n_points(),
+                          parameters.contact.unilateral,
+                          active_set_mode()),
+      parameters.contact.active_set_tolerance);
   }
 
 
@@ -123,59 +165,21 @@ namespace coaxfit
   bool
   CoaxialFit::solve(std::ostream *progress)
   {
-    Timer timer;
-    controller = make_alpha_controller(parameters);
-    if (parameters.solver_method == "monolithic")
-      {
-        coupling = std::make_unique<MonolithicSolver>(
-          shaft,
-          hub,
-          *interface,
-          UnilateralActiveSet(interface->n_points(),
-                              parameters.unilateral,
-                              UnilateralActiveSet::Update::when_converged),
-          parameters.max_steps);
-        const bool converged = coupling->run(progress);
-        timing.coupling      = timer.wall_time();
-        return converged;
-      }
-    InterfaceOperator *shaft_operator = &shaft;
-    InterfaceOperator *hub_operator   = &hub;
-    if (use_condensed_operator())
-      {
-        Timer               condensation;
-        Threads::Task<void> task = Threads::new_task(
-          [&]() { condensed_shaft = std::make_unique<CondensedBody>(shaft); });
-        condensed_hub = std::make_unique<CondensedBody>(hub);
-        task.join();
-        timing.condensation = condensation.wall_time();
-        shaft_operator      = condensed_shaft.get();
-        hub_operator        = condensed_hub.get();
-      }
-    coupling = std::make_unique<StaggeredCoupling>(
-      *shaft_operator,
-      *hub_operator,
-      *interface,
-      *controller,
-      parameters.tolerance,
-      parameters.max_steps,
-      UnilateralActiveSet(interface->n_points(),
-                          parameters.unilateral,
-                          active_set_mode()),
-      parameters.active_set_tolerance);
-    const bool converged = coupling->run(progress);
-    if (use_condensed_operator())
-      {
-        // The fields of the final state: one full solve per body with the
-        // final contact force.
-        std::vector<double> u;
-        Threads::Task<void> task = Threads::new_task(
-          [&]() { shaft.solve_neumann(coupling->contact_force(), u); });
-        std::vector<double> u_hub;
-        hub.solve_neumann(coupling->contact_force(), u_hub);
-        task.join();
-      }
-    timing.coupling = timer.wall_time() - timing.condensation;
+    if (parameters.solver.method == SolverMethod::monolithic)
+      coupling = std::make_unique<MonolithicSolver>(
+        *shaft,
+        *hub,
+        *interface,
+        UnilateralActiveSet(interface->n_points(),
+                            parameters.contact.unilateral,
+                            UnilateralActiveSet::Update::when_converged),
+        parameters.coupling.max_steps);
+    else
+      coupling = make_staggered_coupling();
+
+    TimerOutput::Scope scope(timer, "coupling");
+    const bool         converged = coupling->run(progress);
+    std::tie(shaft_field, hub_field) = coupling->solve_fields();
     return converged;
   }
 
@@ -184,9 +188,10 @@ namespace coaxfit
   bool
   CoaxialFit::use_condensed_operator() const
   {
-    return parameters.interface_operator == "condensed"
-           || (parameters.interface_operator == "auto"
-               && interface->n_points() <= max_condensed_points);
+    const InterfaceOperatorType type = parameters.coupling.interface_operator;
+    return type == InterfaceOperatorType::condensed ||
+           (type == InterfaceOperatorType::automatic &&
+            interface->n_points() <= max_condensed_points);
   }
 
 
@@ -194,9 +199,12 @@ namespace coaxfit
   UnilateralActiveSet::Update
   CoaxialFit::active_set_mode() const
   {
-    const std::string &mode = parameters.active_set_update;
-    if (mode == "every step"
-        || (mode == "auto" && parameters.alpha_controller == "fixed"))
+    const ActiveSetUpdateType mode = parameters.contact.active_set_update;
+    const bool                plain_fixed =
+      parameters.coupling.alpha_rule() == AlphaRuleType::fixed &&
+      parameters.coupling.accelerator() == AcceleratorType::none;
+    if (mode == ActiveSetUpdateType::every_step ||
+        (mode == ActiveSetUpdateType::automatic && plain_fixed))
       return UnilateralActiveSet::Update::every_step;
     return UnilateralActiveSet::Update::when_converged;
   }
@@ -211,29 +219,21 @@ namespace coaxfit
 
 
 
-  void
-  CoaxialFit::output_results(std::ostream &out)
+  std::vector<std::string>
+  CoaxialFit::warnings() const
   {
-    Timer                    timer;
-    const PressureSummary    pressure = pressure_summary();
-    std::vector<std::string> warnings;
-    std::ostringstream       report;
-    report << std::fixed << std::setprecision(4);
-    if (coupling->converged())
-      report << "  converged in " << coupling->n_steps() << " steps ("
-             << coupling->steps_to_displacement_mismatch(1e-2)
-             << " to the paper's criterion max|du|/d < 1e-2)\n";
-    else
+    std::vector<std::string> list;
+    if (!coupling->converged())
       {
         std::ostringstream w;
         w << "not converged within Coupling/Max steps = "
-          << parameters.max_steps << " (|du|/d = " << std::scientific
+          << parameters.coupling.max_steps << " (|du|/d = " << std::scientific
           << std::setprecision(3) << coupling->displacement_residual()
           << ", |dp|/p = " << coupling->traction_residual() << ")";
-        warnings.push_back(w.str());
+        list.push_back(w.str());
       }
-    const Complementarity complementarity(*interface, *coupling);
-    if (!parameters.unilateral && pressure.min < 0.)
+    const PressureSummary pressure = pressure_summary();
+    if (!parameters.contact.unilateral && pressure.min < 0.)
       {
         std::ostringstream w;
         w << std::setprecision(4)
@@ -241,12 +241,28 @@ namespace coaxfit
           << " MPa at z = " << pressure.z_of_min
           << " mm): the surfaces want to separate there, which "
           << "Contact/Unilateral = false does not allow";
-        warnings.push_back(w.str());
+        list.push_back(w.str());
       }
-    if (parameters.unilateral)
+    return list;
+  }
+
+
+
+  void
+  CoaxialFit::print_report(const PressureSummary          &pressure,
+                           const Complementarity          &complementarity,
+                           const std::vector<std::string> &warnings) const
+  {
+    std::ostringstream report;
+    report << std::fixed << std::setprecision(4);
+    if (coupling->converged())
+      report << "  converged in " << coupling->n_steps() << " steps ("
+             << coupling->steps_to_displacement_mismatch(1e-2)
+             << " to the paper's criterion max|du|/d < 1e-2)\n";
+    if (parameters.contact.unilateral)
       {
         const auto zones = coupling->get_active_set().separated_zones(
-          interface->z(), parameters.contact_length());
+          interface->z(), parameters.geometry.contact_length());
         report << "  separated zones:";
         if (zones.empty())
           report << " none";
@@ -257,7 +273,8 @@ namespace coaxfit
                << " active set changes)\n"
                << std::scientific << std::setprecision(2)
                << "  complementarity: max tension "
-               << complementarity.max_tension_relative << ", max penetration/d "
+               << complementarity.max_tension_relative
+               << ", max penetration/d "
                << complementarity.max_penetration_relative << ", max |p gap| "
                << complementarity.max_pressure_gap_relative << std::fixed
                << std::setprecision(4) << '\n';
@@ -273,83 +290,90 @@ namespace coaxfit
     for (const std::string &w : warnings)
       report << "  warning: " << w << '\n';
     out << report.str();
+  }
 
-    const std::string dir = parameters.output_directory + "/";
-    write_contact_pressure(dir + "contact_pressure.csv",
-                           *interface,
-                           pressure,
-                           *coupling);
-    write_convergence(dir + "convergence.csv", *coupling);
-    if (parameters.write_vtu)
-      {
-        shaft.output_results(dir + "shaft.vtu");
-        hub.output_results(dir + "hub.vtu");
-        write_interface_vtp(
-          dir + "interface.vtp", parameters, *interface, pressure, *coupling);
-        // One time step, three parts: ParaView shows them together.
-        std::ofstream pvd(dir + "solution.pvd");
-        pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-               "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "<Collection>\n";
-        unsigned int part = 0;
-        for (const std::string file : {"shaft.vtu", "hub.vtu", "interface.vtp"})
-          pvd << "<DataSet timestep=\"0\" group=\"\" part=\"" << part++
-              << "\" file=\"" << file << "\"/>\n";
-        pvd << "</Collection>\n</VTKFile>\n";
-      }
-    timing.output = timer.wall_time();
-    timing.total  = timing.setup + timing.factorization + timing.condensation
-                   + timing.coupling + timing.output;
-    write_summary(dir + "summary.json",
-                  {parameters,
-                   shaft,
-                   hub,
-                   *interface,
-                   *coupling,
-                   pressure,
-                   timing,
-                   complementarity,
-                   parameters.solver_method == "monolithic" ?
-                     std::string("monolithic") :
-                     controller->name(),
-                   warnings});
 
-    out << "  results in " << parameters.output_directory << '\n';
-    if (parameters.print_timing)
-      out << std::fixed << std::setprecision(3) << "  wall time: setup "
-          << timing.setup << " s, factorization " << timing.factorization
-          << " s, condensation " << timing.condensation << " s, coupling "
-          << timing.coupling << " s, output " << timing.output << " s, total "
-          << timing.total << " s\n";
+
+  void
+  CoaxialFit::output_results()
+  {
+    const PressureSummary          pressure = pressure_summary();
+    const Complementarity          complementarity(*interface, *coupling);
+    const std::vector<std::string> warning_list = warnings();
+    print_report(pressure, complementarity, warning_list);
+
+    const std::string             directory = parameters.output_directory();
+    std::map<std::string, double> timing;
+    const RunResults              results{parameters,
+                             *shaft,
+                             *hub,
+                             shaft_field,
+                             hub_field,
+                             *interface,
+                             *coupling,
+                             pressure,
+                             complementarity,
+                             timing,
+                             warning_list};
+    std::vector<std::string> lines;
+    {
+      TimerOutput::Scope scope(timer, "output");
+      for (const auto &writer : make_result_writers(parameters.output))
+        lines.push_back(writer->write(results, directory));
+    }
+    for (const std::string phase :
+         {"setup", "factorization", "condensation", "coupling", "output"})
+      timing[phase] = 0.;
+    for (const auto &[phase, seconds] :
+         timer.get_summary_data(TimerOutput::total_wall_time))
+      timing[phase] = seconds;
+    double total = 0.;
+    for (const auto &[phase, seconds] : timing)
+      total += seconds;
+    timing["total"] = total;
+    lines.push_back(SummaryWriter().write(results, directory));
+
+    for (const std::string &line : lines)
+      pcout << "  " << line << '\n';
+    pcout << "  results in " << directory << '\n';
+    if (parameters.output.print_timing)
+      pcout << std::fixed << std::setprecision(3) << "  wall time: setup "
+            << timing["setup"] << " s, factorization "
+            << timing["factorization"] << " s, condensation "
+            << timing["condensation"] << " s, coupling " << timing["coupling"]
+            << " s, output " << timing["output"] << " s, total "
+            << timing["total"] << " s\n";
   }
 
 
 
   bool
-  CoaxialFit::run(std::ostream &out)
+  CoaxialFit::run()
   {
     // Created first, so that a directory that cannot be made stops the run
     // before any work; removed again if the run fails before writing.
-    const bool created = !std::filesystem::exists(parameters.output_directory);
-    make_output_directory(parameters.output_directory);
-    setup_system();
-    out << "coaxfit: case " << parameters.case_name << '\n'
-        << "  shaft: " << shaft.n_cells() << " cells, " << shaft.n_dofs()
-        << " DoFs;  hub: " << hub.n_cells() << " cells, " << hub.n_dofs()
-        << " DoFs;  " << interface->n_points() << " interface points, FE_Q("
-        << parameters.degree << ")\n";
+    const std::string directory = parameters.output_directory();
+    const bool        created   = !std::filesystem::exists(directory);
+    make_output_directory(directory);
     bool converged = false;
     try
       {
-        converged = solve(&out);
+        setup_system();
+        pcout << "coaxfit: case " << parameters.case_name << '\n'
+              << "  shaft: " << shaft->n_cells() << " cells, "
+              << shaft->n_dofs() << " DoFs;  hub: " << hub->n_cells()
+              << " cells, " << hub->n_dofs() << " DoFs;  "
+              << interface->n_points() << " interface points, FE_Q("
+              << parameters.mesh.degree << ")\n";
+        converged = solve(pcout.is_active() ? &out : nullptr);
       }
-    catch (const SolverError &)
+    catch (...)
       {
-        if (created && std::filesystem::is_empty(parameters.output_directory))
-          std::filesystem::remove(parameters.output_directory);
+        if (created && std::filesystem::is_empty(directory))
+          std::filesystem::remove(directory);
         throw;
       }
-    output_results(out);
+    output_results();
     return converged;
   }
 } // namespace coaxfit

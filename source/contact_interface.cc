@@ -1,19 +1,20 @@
 #include <coaxfit/contact_interface.h>
 
 #include <cmath>
-#include <numeric>
+#include <limits>
 #include <stdexcept>
 
 namespace coaxfit
 {
-  ContactInterface::ContactInterface(const Body  &shaft,
-                                     const Body  &hub,
-                                     const double interference)
+  ContactInterface::ContactInterface(const BodyDiscretization &shaft,
+                                     const BodyDiscretization &hub,
+                                     const double              interference)
     : d(interference)
     , z_coordinates(shaft.interface_z())
+    , lumped_weights(shaft.interface_weights())
   {
-    const unsigned int n = z_coordinates.size();
-    const double scale   = z_coordinates.empty() ? 1. : z_coordinates.back();
+    const unsigned int n     = z_coordinates.size();
+    const double       scale = z_coordinates.empty() ? 1. : z_coordinates.back();
     if (n < 2 || hub.n_interface_points() != n)
       throw std::logic_error("the contact surfaces of shaft and hub do not "
                              "have matching points");
@@ -21,18 +22,43 @@ namespace coaxfit
       if (std::abs(hub.interface_z()[i] - z_coordinates[i]) > 1e-9 * scale)
         throw std::logic_error("the contact surfaces of shaft and hub do not "
                                "have matching points");
-
-    lumped_weights.assign(n, 0.);
-    for (const auto &[ij, value] : shaft.interface_mass())
-      lumped_weights[ij.first] += value;
   }
 
 
 
-  std::vector<double>
-  ContactInterface::lumped_pressure(const std::vector<double> &force) const
+  Vector<double>
+  ContactInterface::gap(const Vector<double> &u1, const Vector<double> &u2) const
   {
-    std::vector<double> p(force.size());
+    Vector<double> g(u2);
+    g -= u1;
+    g.add(-d);
+    return g;
+  }
+
+
+
+  double
+  ContactInterface::relative_gap_residual(
+    const Vector<double>    &u1,
+    const Vector<double>    &u2,
+    const std::vector<bool> &contact) const
+  {
+    double mismatch = 0.;
+    for (unsigned int i = 0; i < u1.size(); ++i)
+      {
+        const double g = u2[i] - u1[i] - d;
+        mismatch       = std::max(mismatch, contact[i] ? std::abs(g) : -g);
+      }
+    const double r = mismatch / d;
+    return std::isfinite(r) ? r : std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+
+  Vector<double>
+  ContactInterface::pressure(const Vector<double> &force) const
+  {
+    Vector<double> p(force.size());
     for (unsigned int i = 0; i < force.size(); ++i)
       p[i] = force[i] / lumped_weights[i];
     return p;
@@ -41,9 +67,48 @@ namespace coaxfit
 
 
   double
-  ContactInterface::mean_pressure(const std::vector<double> &force) const
+  ContactInterface::max_pressure(const Vector<double> &force) const
   {
-    return std::accumulate(force.begin(), force.end(), 0.)
-           / std::accumulate(lumped_weights.begin(), lumped_weights.end(), 0.);
+    double m = 0.;
+    for (unsigned int i = 0; i < force.size(); ++i)
+      m = std::max(m, std::abs(force[i]) / lumped_weights[i]);
+    return m;
+  }
+
+
+
+  double
+  ContactInterface::max_pressure_difference(const Vector<double> &force1,
+                                            const Vector<double> &force2) const
+  {
+    double m = 0.;
+    for (unsigned int i = 0; i < force1.size(); ++i)
+      m = std::max(m, std::abs(force2[i] - force1[i]) / lumped_weights[i]);
+    return m;
+  }
+
+
+
+  double
+  ContactInterface::max_tension(const Vector<double> &force) const
+  {
+    double m = 0.;
+    for (unsigned int i = 0; i < force.size(); ++i)
+      m = std::max(m, -force[i] / lumped_weights[i]);
+    return m;
+  }
+
+
+
+  double
+  ContactInterface::mean_pressure(const Vector<double> &force) const
+  {
+    double total = 0., area = 0.;
+    for (unsigned int i = 0; i < force.size(); ++i)
+      {
+        total += force[i];
+        area += lumped_weights[i];
+      }
+    return total / area;
   }
 } // namespace coaxfit

@@ -69,12 +69,14 @@ namespace coaxfit
 #include <deal.II/fe/fe_values.h>
 
 #include <coaxfit/axisymmetric.h>
-#include <coaxfit/body.h>
+#include <coaxfit/body_discretization.h>
 
 namespace coaxfit
 {
   LameErrors
-  lame_errors(const Body &body, const LameCylinder &exact)
+  lame_errors(const BodyDiscretization &body,
+              const Vector<double>     &solution,
+              const LameCylinder       &exact)
   {
     const auto     &dof_handler = body.get_dof_handler();
     const QGauss<2> quadrature(dof_handler.get_fe().degree + 3);
@@ -91,10 +93,10 @@ namespace coaxfit
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
-        fe_values[u_r].get_function_values(body.get_solution(), ur);
-        fe_values[u_z].get_function_values(body.get_solution(), uz);
-        fe_values[u_r].get_function_gradients(body.get_solution(), grad_ur);
-        fe_values[u_z].get_function_gradients(body.get_solution(), grad_uz);
+        fe_values[u_r].get_function_values(solution, ur);
+        fe_values[u_z].get_function_values(solution, uz);
+        fe_values[u_r].get_function_gradients(solution, grad_ur);
+        fe_values[u_z].get_function_gradients(solution, grad_uz);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const Point<2> x     = fe_values.quadrature_point(q);

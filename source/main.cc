@@ -8,7 +8,7 @@
 namespace
 {
   const char *usage
-    = "Usage: coaxfit [--set Section/Name=value]... FILE.prm\n"
+    = "Usage: coaxfit [--quiet] [--set Section/Name=value]... FILE.prm\n"
       "       coaxfit --print-parameters\n"
       "       coaxfit --help\n"
       "\n"
@@ -19,14 +19,17 @@ namespace
       "  --set Section/Name=value   override a parameter of FILE.prm, e.g.\n"
       "                             --set Mesh/Global\\ refinements=2\n"
       "                             --set Material/Hub/E=7e4\n"
+      "  --quiet                    print only the final report and errors\n"
       "  --print-parameters         list every parameter with its default,\n"
       "                             allowed values and documentation\n"
       "  --help                     this text\n"
       "\n"
       "Results go to Output/Directory (default output/<FILE's base name>):\n"
-      "contact_pressure.csv, convergence.csv, summary.json, shaft.vtu,\n"
-      "hub.vtu and solution.pvd. Exit code 0: converged; 1: bad input;\n"
-      "2: the coupling did not converge or diverged.\n";
+      "contact_pressure.csv, convergence.csv, summary.json, parameters.prm\n"
+      "(repeats the run), parameters.json, shaft.vtu, hub.vtu,\n"
+      "interface.vtp and solution.pvd. Exit code 0: converged; 1: bad\n"
+      "input; 2: the coupling did not converge or diverged; 3: internal\n"
+      "or system error.\n";
 } // namespace
 
 int
@@ -37,6 +40,7 @@ main(int argc, char **argv)
     {
       std::vector<std::pair<std::string, std::string>> overrides;
       std::string                                      filename;
+      bool                                             quiet = false;
       for (int i = 1; i < argc; ++i)
         {
           const std::string arg = argv[i];
@@ -50,6 +54,8 @@ main(int argc, char **argv)
               print_parameters(std::cout);
               return 0;
             }
+          else if (arg == "--quiet" || arg == "-q")
+            quiet = true;
           else if (arg == "--set")
             {
               if (i + 1 >= argc)
@@ -75,8 +81,8 @@ main(int argc, char **argv)
         throw InputError("no parameter file given (see coaxfit --help)");
 
       const Parameters parameters = read_parameters(filename, overrides);
-      CoaxialFit       fit(parameters);
-      return fit.run(std::cout) ? 0 : 2;
+      CoaxialFit       fit(parameters, std::cout, !quiet);
+      return fit.run() ? 0 : 2;
     }
   catch (const InputError &e)
     {

@@ -10,8 +10,8 @@
 
 namespace coaxfit
 {
-  MonolithicSolver::MonolithicSolver(Body                      &shaft,
-                                     Body                      &hub,
+  MonolithicSolver::MonolithicSolver(const BodyDiscretization  &shaft,
+                                     const BodyDiscretization  &hub,
                                      const ContactInterface    &interface,
                                      const UnilateralActiveSet &active_set,
                                      const unsigned int         max_steps)
@@ -115,15 +115,15 @@ namespace coaxfit
       x1[i] = rhs[i];
     for (unsigned int i = 0; i < K2.m(); ++i)
       x2[i] = rhs[n1 + i];
-    shaft.set_solution(x1);
-    hub.set_solution(x2);
+    shaft_field = x1;
+    hub_field   = x2;
 
     // Contact force from the shaft's reaction (row of K1 u1); the hub's
     // reaction must be its opposite (checked as the traction mismatch).
     const unsigned int m = dofs1.size();
-    force.assign(m, 0.);
-    u1.assign(m, 0.);
-    u2.assign(m, 0.);
+    force.reinit(m);
+    u1.reinit(m);
+    u2.reinit(m);
     double mismatch = 0., magnitude = 0.;
     for (unsigned int i = 0; i < m; ++i)
       {
@@ -156,21 +156,14 @@ namespace coaxfit
     for (unsigned int step = 1; step <= max_steps; ++step)
       {
         solve_tied();
-        std::vector<double> gap(force.size());
-        double              worst_gap = 0.;
-        for (unsigned int i = 0; i < force.size(); ++i)
-          {
-            gap[i]    = u2[i] - u1[i] - interface.interference();
-            worst_gap = std::max(worst_gap,
-                                 active_set.in_contact()[i] ? std::abs(gap[i]) :
-                                                              -gap[i]);
-          }
-        last_displacement_mismatch = worst_gap / interface.interference();
+        last_displacement_mismatch =
+          interface.relative_gap_residual(u1, u2, active_set.in_contact());
         // Released points carry no force: the reaction there is zero.
         for (unsigned int i = 0; i < force.size(); ++i)
           if (!active_set.in_contact()[i])
             force[i] = 0.;
-        const bool changed = active_set.update(force, gap);
+        const bool changed =
+          active_set.update(force, interface.gap(u1, u2));
         history_rows.push_back({step,
                                 true,
                                 0.,
@@ -189,5 +182,24 @@ namespace coaxfit
           }
       }
     return has_converged;
+  }
+
+
+
+  std::pair<Vector<double>, Vector<double>>
+  MonolithicSolver::solve_fields()
+  {
+    return {shaft_field, hub_field};
+  }
+
+
+
+  SolverStatistics
+  MonolithicSolver::statistics() const
+  {
+    SolverStatistics s;
+    s.method         = "monolithic";
+    s.factorizations = {{"coupled", factorizations}};
+    return s;
   }
 } // namespace coaxfit

@@ -1,12 +1,11 @@
+#include <deal.II/lac/lapack_templates.h>
+
 #include <coaxfit/input_error.h>
 #include <coaxfit/sparse_cholesky.h>
 
 #include <algorithm>
 #include <cholmod.h>
 #include <string>
-
-extern "C" void
-dpotri_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 
 namespace coaxfit
 {
@@ -239,7 +238,7 @@ namespace coaxfit
     Assert(L->is_super && L->is_ll, ExcInternalError());
     const std::vector<std::size_t> &p = impl->trailing_position;
     Assert(!p.empty(), ExcMessage("analyze() was given no unknowns"));
-    const int         n     = p.size();
+    const types::blas_int n = p.size();
     const std::size_t first = L->n - n;
 
     // L_SS, column major, from the supernodes holding columns first..n-1:
@@ -267,16 +266,17 @@ namespace coaxfit
                   = Lx[px[s] + (j - k1) * nsrow + r];
             }
       }
-    int info = 0;
-    dpotri_("L", &n, block.data(), &n, &info);
+    types::blas_int info = 0;
+    const char      lower = 'L';
+    potri(&lower, &n, block.data(), &n, &info);
     if (info != 0)
       throw SolverError("LAPACK dpotri failed (info " + std::to_string(info)
                         + ") inverting the interface Schur complement");
 
     // Back to the caller's numbering of the unknowns.
     inverse.reinit(n, n);
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b)
+    for (types::blas_int a = 0; a < n; ++a)
+      for (types::blas_int b = 0; b < n; ++b)
         inverse(a, b) = block[std::max(p[a], p[b]) + std::min(p[a], p[b]) * n];
   }
 } // namespace coaxfit

@@ -1,5 +1,4 @@
-#include <deal.II/base/thread_management.h>
-
+#include <coaxfit/concurrency.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/staggered_coupling.h>
 
@@ -11,57 +10,27 @@
 
 namespace coaxfit
 {
-  namespace
-  {
-    /** Run two jobs concurrently and wait for both. */
-    template <typename F1, typename F2>
-    void
-    concurrently(const F1 &job1, const F2 &job2)
-    {
-      Threads::Task<void> task = Threads::new_task(job1);
-      job2();
-      task.join();
-    }
-  } // namespace
-
-
-
-  StaggeredCoupling::StaggeredCoupling(InterfaceOperator         &shaft,
-                                       InterfaceOperator         &hub,
-                                       const ContactInterface    &interface,
-                                       AlphaController           &controller,
-                                       const double               tolerance,
-                                       const unsigned int         max_steps,
+  StaggeredCoupling::StaggeredCoupling(BodySolver               &shaft_solver,
+                                       BodySolver               &hub_solver,
+                                       InterfaceOperator        &shaft,
+                                       InterfaceOperator        &hub,
+                                       const ContactInterface   &interface,
+                                       const CouplingParameters &parameters,
                                        const UnilateralActiveSet &active_set,
                                        const double active_set_tolerance)
     : InterfaceSolver(active_set)
+    , shaft_solver(shaft_solver)
+    , hub_solver(hub_solver)
     , shaft(shaft)
     , hub(hub)
     , interface(interface)
-    , controller(controller)
-    , tolerance(tolerance)
-    , max_steps(max_steps)
-    , active_set_tolerance(std::max(active_set_tolerance, tolerance))
+    , rule(make_alpha_rule(parameters))
+    , accelerator(make_accelerator(parameters))
+    , accelerated(parameters.accelerator() != AcceleratorType::none)
+    , tolerance(parameters.tolerance)
+    , max_steps(parameters.max_steps)
+    , active_set_tolerance(std::max(active_set_tolerance, parameters.tolerance))
   {}
-
-
-
-  double
-  StaggeredCoupling::relative_gap_residual() const
-  {
-    // At contact points the gap must vanish; separated points carry no
-    // force and may open (gap >= 0) but must not penetrate.
-    const double             d        = interface.interference();
-    const std::vector<bool> &contact  = active_set.in_contact();
-    double                   mismatch = 0.;
-    for (unsigned int i = 0; i < u1.size(); ++i)
-      {
-        const double gap = u2[i] - u1[i] - d;
-        mismatch = std::max(mismatch, contact[i] ? std::abs(gap) : -gap);
-      }
-    const double r = mismatch / d;
-    return std::isfinite(r) ? r : std::numeric_limits<double>::quiet_NaN();
-  }
 
 
 
@@ -71,42 +40,57 @@ namespace coaxfit
     force = next_force;
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
-
-    // The paper updates the flags after every Neumann step; the outer
-    // (primal-dual) mode once the iteration has converged for the current
-    // set to the active-set tolerance.
-    active_set_changed  = false;
-    active_set_verified = false;
-    if (active_set.update_mode() == UnilateralActiveSet::Update::every_step
-        || (relative_gap_residual() < active_set_tolerance
-            && last_traction_mismatch < active_set_tolerance))
-      {
-        std::vector<double> gap(force.size());
-        for (unsigned int i = 0; i < force.size(); ++i)
-          gap[i] = u2[i] - u1[i] - interface.interference();
-        active_set_changed  = active_set.update(force, gap);
-        active_set_verified = !active_set_changed;
-        if (active_set_changed)
-          {
-            controller.restart();
-            // Each outer update starts a new inner iteration; in the
-            // paper's every-step mode changes are part of the iteration.
-            if (active_set.update_mode()
-                == UnilateralActiveSet::Update::when_converged)
-              last_change_step = history_rows.size() + 1;
-          }
-      }
-    last_displacement_mismatch = relative_gap_residual();
+    update_active_set();
+    last_displacement_mismatch =
+      interface.relative_gap_residual(u1, u2, active_set.in_contact());
 
     neumann_force = force;
     neumann_u1    = u1;
     neumann_u2    = u2;
+
     history_rows.push_back({static_cast<unsigned int>(history_rows.size() + 1),
                             true,
-                            controller.representative_alpha(),
+                            rule->representative_alpha(),
                             last_displacement_mismatch,
                             0.,
                             active_set.n_separated()});
+
+    // The alpha of the next Dirichlet step. With an accelerator the rule is
+    // asked only until its first estimate, and each new alpha is a new
+    // map: the accelerator restarts.
+    if (!accelerated || !rule->estimated())
+      {
+        rule->update({force, u1, u2, last_displacement_mismatch});
+        accelerator->restart();
+      }
+  }
+
+
+
+  void
+  StaggeredCoupling::update_active_set()
+  {
+    // The paper updates the flags after every Neumann step; the outer
+    // (primal-dual) mode once the iteration has converged for the current
+    // set to the active-set tolerance.
+    active_set_verified = false;
+    if (active_set.update_mode() == UnilateralActiveSet::Update::every_step ||
+        (interface.relative_gap_residual(u1, u2, active_set.in_contact()) <
+           active_set_tolerance &&
+         last_traction_mismatch < active_set_tolerance))
+      {
+        const bool changed  = active_set.update(force, interface.gap(u1, u2));
+        active_set_verified = !changed;
+        if (changed)
+          {
+            accelerator->restart();
+            // Each outer update starts a new inner iteration; in the
+            // paper's every-step mode changes are part of the iteration.
+            if (active_set.update_mode() ==
+                UnilateralActiveSet::Update::when_converged)
+              last_change_step = history_rows.size() + 1;
+          }
+      }
   }
 
 
@@ -117,10 +101,10 @@ namespace coaxfit
     const unsigned int       n       = force.size();
     const double             d       = interface.interference();
     const std::vector<bool> &contact = active_set.in_contact();
-    std::vector<double>      u_shaft(n), u_hub(n), zero(n, 0.), f1, f2;
+    Vector<double>           u_shaft(n), u_hub(n), zero(n), f1, f2;
     for (unsigned int i = 0; i < n; ++i)
       {
-        u_shaft[i] = u1[i] + (1. - controller.alpha(i)) * (u2[i] - d - u1[i]);
+        u_shaft[i] = u1[i] + (1. - rule->alpha(i)) * (u2[i] - d - u1[i]);
         u_hub[i]   = u_shaft[i] + d;
       }
     // Contact points get the blended displacement, separated points stay
@@ -128,35 +112,32 @@ namespace coaxfit
     concurrently([&]() { shaft.solve(contact, u_shaft, zero, u1, f1); },
                  [&]() { hub.solve(contact, u_hub, zero, u2, f2); });
 
-    const std::vector<double> &w        = interface.weights();
-    double                     mismatch = 0., tension = 0., magnitude = 0.;
     for (unsigned int i = 0; i < n; ++i)
-      {
-        force[i] = f1[i] + controller.alpha(i) * (f2[i] - f1[i]);
-        mismatch = std::max(mismatch, std::abs(f2[i] - f1[i]) / w[i]);
-        if (active_set.enabled()
-            && active_set.update_mode()
-                 == UnilateralActiveSet::Update::every_step)
-          tension = std::max(tension, -force[i] / w[i]);
-        magnitude = std::max(
-          {magnitude, std::abs(f1[i]) / w[i], std::abs(f2[i]) / w[i]});
-      }
+      force[i] = f1[i] + rule->alpha(i) * (f2[i] - f1[i]);
     // A tensile blend is a violated contact condition: part of the residual.
+    const bool clamping =
+      active_set.enabled() &&
+      active_set.update_mode() == UnilateralActiveSet::Update::every_step;
+    const double mismatch  = interface.max_pressure_difference(f1, f2);
+    const double tension   = clamping ? interface.max_tension(force) : 0.;
+    const double magnitude = std::max(interface.max_pressure(f1),
+                                      interface.max_pressure(f2));
     last_traction_mismatch = std::max(mismatch, tension) / magnitude;
     if (!std::isfinite(last_traction_mismatch))
       last_traction_mismatch = std::numeric_limits<double>::quiet_NaN();
 
     active_set.clamp(force);
     next_force = force;
-    controller.accelerate(neumann_force, next_force);
+    accelerator->accelerate(neumann_force, next_force);
     active_set.clamp(next_force);
 
-    history_rows.push_back({static_cast<unsigned int>(history_rows.size() + 1),
-                            false,
-                            controller.representative_alpha(),
-                            relative_gap_residual(),
-                            last_traction_mismatch,
-                            active_set.n_separated()});
+    history_rows.push_back(
+      {static_cast<unsigned int>(history_rows.size() + 1),
+       false,
+       rule->representative_alpha(),
+       interface.relative_gap_residual(u1, u2, active_set.in_contact()),
+       last_traction_mismatch,
+       active_set.n_separated()});
   }
 
 
@@ -176,8 +157,8 @@ namespace coaxfit
         load += neumann_force[i] * neumann_force[i] / interface.weights()[i];
       }
     std::ostringstream msg;
-    if (!(load > 0.) || !(work1 > 0.) || !(work2 > 0.)
-        || !std::isfinite(work1 + work2))
+    if (!(load > 0.) || !(work1 > 0.) || !(work2 > 0.) ||
+        !std::isfinite(work1 + work2))
       {
         msg << "try a value of Coupling/Alpha closer to the paper's table";
         return msg.str();
@@ -195,21 +176,22 @@ namespace coaxfit
 
 
 
-  void
-  StaggeredCoupling::check_divergence() const
+  std::string
+  StaggeredCoupling::divergence_reason() const
   {
     const CouplingStep &last     = history_rows.back();
     const bool          neumann  = last.neumann;
     const auto          residual = [neumann](const CouplingStep &s) {
       return neumann ? s.displacement_mismatch : s.traction_mismatch;
     };
-    const double current = residual(last);
-    std::string  reason;
+    const double       current = residual(last);
+    std::ostringstream s;
+    s << std::setprecision(3);
     if (!std::isfinite(current))
-      reason = "the residual is not a finite number";
-    else if (current > 1e3)
-      reason = "the relative mismatch exceeds 1e3";
-    else if (current > 10. * tolerance)
+      return "the residual is not a finite number";
+    if (current > 1e3)
+      return "the relative mismatch exceeds 1e3";
+    if (current > 10. * tolerance)
       {
         // The same kind of residual grew in each of the last four steps of
         // that kind.
@@ -220,45 +202,51 @@ namespace coaxfit
              ++it)
           if (it->neumann == neumann)
             same_kind.push_back(residual(*it));
-        if (same_kind.size() > window
-            && std::is_sorted(same_kind.rbegin(),
-                              same_kind.rend(),
-                              [](double a, double b) { return a <= b; }))
+        if (same_kind.size() > window &&
+            std::is_sorted(same_kind.rbegin(),
+                           same_kind.rend(),
+                           [](double a, double b) { return a <= b; }))
           {
-            std::ostringstream s;
-            s << std::setprecision(3) << "the "
-              << (neumann ? "displacement" : "traction")
+            s << "the " << (neumann ? "displacement" : "traction")
               << " mismatch grew in each of the last " << window
               << " steps, from " << same_kind.back() << " to " << current;
-            reason = s.str();
+            return s.str();
           }
       }
     // A stall: since the last active set change the iteration ran 60 steps
     // and the best mismatch of the last 30 is no better than before them.
     const unsigned int stall_window = 30;
-    if (reason.empty() && last.step >= last_change_step + 2 * stall_window)
-      {
-        const auto level = [](const CouplingStep &s) {
-          return std::max(s.displacement_mismatch, s.traction_mismatch);
-        };
-        double recent = std::numeric_limits<double>::infinity();
-        double before = std::numeric_limits<double>::infinity();
-        for (const CouplingStep &s : history_rows)
-          if (s.step > last_change_step)
-            (s.step + stall_window > last.step ? recent : before)
-              = std::min(s.step + stall_window > last.step ? recent : before,
-                         level(s));
-        if (recent >= before)
-          {
-            std::ostringstream s;
-            s << std::setprecision(3) << "the iteration stalls: no progress "
-              << "in the last " << stall_window << " steps (best mismatch "
-              << before << ")";
-            reason = s.str();
-          }
-      }
+    if (last.step < last_change_step + 2 * stall_window)
+      return "";
+    double recent = std::numeric_limits<double>::infinity();
+    double before = std::numeric_limits<double>::infinity();
+    for (const CouplingStep &step : history_rows)
+      if (step.step > last_change_step)
+        {
+          double &level = (step.step + stall_window > last.step) ? recent :
+                                                                   before;
+          level = std::min(level,
+                           std::max(step.displacement_mismatch,
+                                    step.traction_mismatch));
+        }
+    if (recent < before)
+      return "";
+    s << "the iteration stalls: no progress in the last " << stall_window
+      << " steps (best mismatch " << before << ")";
+    return s.str();
+  }
+
+
+
+  void
+  StaggeredCoupling::check_divergence() const
+  {
+    const std::string reason = divergence_reason();
     if (reason.empty())
       return;
+    const CouplingStep &last = history_rows.back();
+    const double        current =
+      last.neumann ? last.displacement_mismatch : last.traction_mismatch;
 
     // Growth or a stall far below the start is the round-off floor of an
     // ill-conditioned interface problem, not a bad alpha.
@@ -266,30 +254,29 @@ namespace coaxfit
     double best_traction     = std::numeric_limits<double>::infinity();
     for (const CouplingStep &s : history_rows)
       if (s.neumann)
-        best_displacement
-          = std::min(best_displacement, s.displacement_mismatch);
+        best_displacement =
+          std::min(best_displacement, s.displacement_mismatch);
       else
         best_traction = std::min(best_traction, s.traction_mismatch);
     const double floor = std::max(best_displacement, best_traction);
+    std::ostringstream msg;
     if (std::isfinite(current) && current < 1e-4)
       {
-        std::ostringstream msg;
         msg << std::setprecision(2) << "the coupling iteration stopped "
             << "improving at step " << last.step << " (" << reason
             << "): the mismatches reached |du|/d = " << best_displacement
             << " and |dp|/p = " << best_traction
             << ", the round-off level of this problem (thin walls give "
             << "cells of large aspect ratio and an ill-conditioned "
-            << "interface problem); set Coupling/Tolerance above " << 2. * floor
-            << " or use fewer Mesh/Radial cells.";
+            << "interface problem); set Coupling/Tolerance above "
+            << 2. * floor << " or use fewer Mesh/Radial cells.";
         throw SolverError(msg.str());
       }
-
-    std::ostringstream msg;
     msg << "the coupling iteration failed at step " << last.step
-        << " with Coupling/Alpha controller = " << controller.name()
+        << " with Coupling/Alpha rule = " << rule->name()
+        << " and Accelerator = " << accelerator->name()
         << ", alpha = " << std::setprecision(4)
-        << controller.representative_alpha() << ": " << reason << "; "
+        << rule->representative_alpha() << ": " << reason << "; "
         << suggested_alpha_range()
         << " (a Winkler estimate; thin walls can leave no convergent "
         << "constant alpha: then use Coupling/Alpha controller = iqn-ils).";
@@ -298,14 +285,34 @@ namespace coaxfit
 
 
 
+  void
+  StaggeredCoupling::print_step(std::ostream &out) const
+  {
+    const CouplingStep &s = history_rows.back();
+    std::ostringstream  line;
+    line << std::setw(6) << s.step << "  "
+         << (s.neumann ? "Neumann  " : "Dirichlet") << "  " << std::fixed
+         << std::setprecision(4) << s.alpha << "  " << std::scientific
+         << std::setprecision(3);
+    if (s.neumann)
+      line << s.displacement_mismatch << "   -";
+    else
+      line << "-           " << s.traction_mismatch;
+    if (active_set.enabled())
+      line << "   " << std::setw(4) << s.n_separated;
+    out << line.str() << std::endl;
+  }
+
+
+
   bool
   StaggeredCoupling::run(std::ostream *progress)
   {
     const unsigned int n = interface.n_points();
-    force.assign(n, 0.); // the paper's zero approximation
-    next_force = force;
-    u1.assign(n, 0.);
-    u2.assign(n, 0.);
+    force.reinit(n); // the paper's zero approximation
+    next_force.reinit(n);
+    u1.reinit(n);
+    u2.reinit(n);
     history_rows.clear();
     has_converged              = false;
     last_displacement_mismatch = std::numeric_limits<double>::infinity();
@@ -318,36 +325,13 @@ namespace coaxfit
     while (history_rows.size() < max_steps)
       {
         if (history_rows.size() % 2 == 0)
-          {
-            neumann_step();
-            controller.update({history_rows.back().step,
-                               force,
-                               u1,
-                               u2,
-                               interface.weights(),
-                               last_displacement_mismatch});
-          }
+          neumann_step();
         else
           dirichlet_step();
-
-        const CouplingStep &s = history_rows.back();
         if (progress)
-          {
-            std::ostringstream line;
-            line << std::setw(6) << s.step << "  "
-                 << (s.neumann ? "Neumann  " : "Dirichlet") << "  "
-                 << std::fixed << std::setprecision(4) << s.alpha << "  "
-                 << std::scientific << std::setprecision(3);
-            if (s.neumann)
-              line << s.displacement_mismatch << "   -";
-            else
-              line << "-           " << s.traction_mismatch;
-            if (active_set.enabled())
-              line << "   " << std::setw(4) << s.n_separated;
-            *progress << line.str() << std::endl;
-          }
-        if (last_displacement_mismatch < tolerance
-            && last_traction_mismatch < tolerance && active_set_verified)
+          print_step(*progress);
+        if (last_displacement_mismatch < tolerance &&
+            last_traction_mismatch < tolerance && active_set_verified)
           {
             has_converged = true;
             break;
@@ -359,4 +343,37 @@ namespace coaxfit
 
 
 
+  std::pair<Vector<double>, Vector<double>>
+  StaggeredCoupling::solve_fields()
+  {
+    // One full solve per body with the final contact force.
+    const std::vector<bool> none(force.size(), false);
+    const Vector<double>    zero(force.size());
+    Vector<double>          shaft_field, hub_field;
+    concurrently(
+      [&]() { shaft_field = shaft_solver.solve_field(none, zero, force); },
+      [&]() { hub_field = hub_solver.solve_field(none, zero, force); });
+    return {shaft_field, hub_field};
+  }
+
+
+
+  SolverStatistics
+  StaggeredCoupling::statistics() const
+  {
+    SolverStatistics s;
+    s.method         = "staggered";
+    s.alpha_rule     = rule->name();
+    s.accelerator    = accelerator->name();
+    s.factorizations = {{"shaft", shaft_solver.n_factorizations()},
+                        {"hub", hub_solver.n_factorizations()}};
+    if (&shaft != &shaft_solver)
+      {
+        s.factorizations["shaft_interface"] = shaft.n_factorizations();
+        s.factorizations["hub_interface"]   = hub.n_factorizations();
+      }
+    s.solves = {{"shaft", shaft_solver.n_solves()},
+                {"hub", hub_solver.n_solves()}};
+    return s;
+  }
 } // namespace coaxfit

@@ -1,11 +1,15 @@
 #ifndef coaxfit_active_set_h
 #define coaxfit_active_set_h
 
+#include <deal.II/lac/vector.h>
+
 #include <utility>
 #include <vector>
 
 namespace coaxfit
 {
+  using namespace dealii;
+
   /**
    * The unilateral (frictionless, no adhesion) contact conditions of the
    * paper, (1.2)-(1.3), as a contact / separated flag per interface point,
@@ -60,14 +64,14 @@ namespace coaxfit
      * returns how many.
      */
     unsigned int
-    clamp(std::vector<double> &force) const;
+    clamp(Vector<double> &force) const;
 
     /**
      * Flag the points from the state of a Neumann step. Returns true if
      * the set changed.
      */
     bool
-    update(const std::vector<double> &force, const std::vector<double> &gap);
+    update(const Vector<double> &force, const Vector<double> &gap);
 
     /** Contact flag of every point (the Dirichlet step's prescribed set). */
     const std::vector<bool> &

@@ -1,39 +1,62 @@
 #ifndef coaxfit_coaxial_fit_h
 #define coaxfit_coaxial_fit_h
 
-#include <coaxfit/alpha_controller.h>
-#include <coaxfit/body.h>
-#include <coaxfit/contact_interface.h>
-#include <coaxfit/monolithic_solver.h>
-#include <coaxfit/parameters.h>
-#include <coaxfit/results.h>
-#include <coaxfit/staggered_coupling.h>
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
 
+#include <coaxfit/body_discretization.h>
+#include <coaxfit/body_solver.h>
+#include <coaxfit/condensed_body.h>
+#include <coaxfit/contact_interface.h>
+#include <coaxfit/interface_solver.h>
+#include <coaxfit/parameters.h>
+#include <coaxfit/pressure_summary.h>
+
+#include <map>
 #include <memory>
 #include <ostream>
+#include <string>
+#include <vector>
 
 namespace coaxfit
 {
+  /** Geometry and mesh settings of the shaft D1 for @p parameters. */
+  BodyGeometry
+  shaft_geometry(const Parameters &parameters);
+
+  /** Geometry and mesh settings of the hub D2 for @p parameters. */
+  BodyGeometry
+  hub_geometry(const Parameters &parameters);
+
+  /** The discretization of the shaft (@p shaft) or the hub, not set up. */
+  std::unique_ptr<BodyDiscretization>
+  make_body(const Parameters &parameters, bool shaft);
+
   /**
    * One coaxfit run, in deal.II's tutorial structure: setup_system() builds
    * the shaft D1 and the hub D2 with matching contact surfaces, their
-   * interface and factorizations; solve() runs the staggered coupling;
-   * output_results() writes contact_pressure.csv, convergence.csv,
-   * summary.json and VTU + PVD to the output directory. run() does all
-   * three.
+   * interface and factorizations; solve() runs the selected solver
+   * (staggered coupling or monolithic reference); output_results() writes
+   * the result files through the ResultWriters and summary.json. run() does
+   * all three.
    */
   class CoaxialFit
   {
   public:
-    explicit CoaxialFit(const Parameters &parameters);
+    /**
+     * Progress (header, steps, files, timing) goes to @p out when
+     * @p verbose; the final report always.
+     */
+    explicit CoaxialFit(const Parameters &parameters,
+                        std::ostream     &out     = std::cout,
+                        bool              verbose = true);
 
     /**
-     * Run the case, printing progress to @p out. Returns true if the
-     * coupling converged; throws SolverError if it diverged (then no result
-     * file is written).
+     * Run the case. Returns true if the coupling converged; throws
+     * SolverError if it diverged (then no result file is written).
      */
     bool
-    run(std::ostream &out);
+    run();
 
     /** Meshes, DoFs, matrices, the contact interface, factorizations. */
     void
@@ -43,9 +66,9 @@ namespace coaxfit
     bool
     solve(std::ostream *progress);
 
-    /** Write the result files and print a short report to @p out. */
+    /** Write the result files and print the report. */
     void
-    output_results(std::ostream &out);
+    output_results();
 
     /** The coupling (after solve()). */
     const InterfaceSolver &
@@ -65,14 +88,6 @@ namespace coaxfit
     PressureSummary
     pressure_summary() const;
 
-    /** Geometry of the shaft D1 as meshed for these parameters. */
-    static BodyGeometry
-    shaft_geometry(const Parameters &parameters);
-
-    /** Geometry of the hub D2 as meshed for these parameters. */
-    static BodyGeometry
-    hub_geometry(const Parameters &parameters);
-
     /** Largest interface for which Interface operator = auto condenses. */
     static constexpr unsigned int max_condensed_points = 2000;
 
@@ -81,18 +96,34 @@ namespace coaxfit
     bool
     use_condensed_operator() const;
 
-    /** The active set update mode selected by Contact/Active set update. */
+    /** The active set update mode (auto resolved). */
     UnilateralActiveSet::Update
     active_set_mode() const;
 
-    const Parameters                  parameters;
-    Body                              shaft;
-    Body                              hub;
-    std::unique_ptr<ContactInterface> interface;
-    std::unique_ptr<AlphaController>  controller;
-    std::unique_ptr<InterfaceSolver>  coupling;
-    std::unique_ptr<CondensedBody>    condensed_shaft, condensed_hub;
-    Timing                            timing;
+    /** The staggered coupling with full or condensed operators. */
+    std::unique_ptr<InterfaceSolver>
+    make_staggered_coupling();
+
+    /** Warnings about the final state, one line each. */
+    std::vector<std::string>
+    warnings() const;
+
+    /** The report of the final state, printed always. */
+    void
+    print_report(const PressureSummary    &pressure,
+                 const Complementarity    &complementarity,
+                 const std::vector<std::string> &warnings) const;
+
+    const Parameters                    parameters;
+    std::ostream                       &out;
+    ConditionalOStream                  pcout;
+    std::unique_ptr<BodyDiscretization> shaft, hub;
+    std::unique_ptr<BodySolver>         shaft_solver, hub_solver;
+    std::unique_ptr<CondensedBody>      condensed_shaft, condensed_hub;
+    std::unique_ptr<ContactInterface>   interface;
+    std::unique_ptr<InterfaceSolver>    coupling;
+    Vector<double>                      shaft_field, hub_field;
+    TimerOutput                         timer;
   };
 } // namespace coaxfit
 

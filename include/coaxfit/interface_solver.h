@@ -1,10 +1,15 @@
 #ifndef coaxfit_interface_solver_h
 #define coaxfit_interface_solver_h
 
+#include <deal.II/lac/vector.h>
+
 #include <coaxfit/active_set.h>
 
 #include <limits>
+#include <map>
 #include <ostream>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
@@ -27,6 +32,19 @@ namespace coaxfit
     double traction_mismatch;
     /** Number of separated interface points after this step. */
     unsigned int n_separated;
+  };
+
+  /**
+   * What a solver reports about itself: its method and controller, and
+   * counts of its work (factorizations, solves) by name.
+   */
+  struct SolverStatistics
+  {
+    std::string                         method;
+    std::string                         alpha_rule;
+    std::string                         accelerator;
+    std::map<std::string, unsigned int> factorizations;
+    std::map<std::string, unsigned int> solves;
   };
 
   /**
@@ -53,8 +71,19 @@ namespace coaxfit
      * whether it converged.
      */
     virtual bool
-    run(std::ostream *progress)
-      = 0;
+    run(std::ostream *progress) = 0;
+
+    /**
+     * The displacement fields of shaft and hub for the final state on S
+     * (an explicit, full solve of each body where the method iterated on
+     * the interface only).
+     */
+    virtual std::pair<Vector<double>, Vector<double>>
+    solve_fields() = 0;
+
+    /** What the solver reports about itself. */
+    virtual SolverStatistics
+    statistics() const = 0;
 
     bool
     converged() const
@@ -90,19 +119,19 @@ namespace coaxfit
 
     /** @name The final state on S */
     /** @{ */
-    const std::vector<double> &
+    const Vector<double> &
     contact_force() const
     {
       return force;
     }
 
-    const std::vector<double> &
+    const Vector<double> &
     u_shaft() const
     {
       return u1;
     }
 
-    const std::vector<double> &
+    const Vector<double> &
     u_hub() const
     {
       return u2;
@@ -131,8 +160,8 @@ namespace coaxfit
     }
 
   protected:
-    std::vector<double>       force;  ///< nodal contact force (compression +)
-    std::vector<double>       u1, u2; ///< u_r of shaft and hub on S
+    Vector<double>            force;  ///< nodal contact force (compression +)
+    Vector<double>            u1, u2; ///< u_r of shaft and hub on S
     std::vector<CouplingStep> history_rows;
     double                    last_displacement_mismatch;
     double                    last_traction_mismatch;

@@ -1,11 +1,13 @@
 #ifndef coaxfit_lame_h
 #define coaxfit_lame_h
 
+#include <deal.II/lac/vector.h>
+
 #include <coaxfit/parameters.h>
 
 namespace coaxfit
 {
-  class Body;
+  class BodyDiscretization;
 }
 
 namespace coaxfit
@@ -67,11 +69,13 @@ namespace coaxfit
   };
 
   /**
-   * Errors of the last solution of @p body against @p exact, integrated
+   * Errors of @p solution of @p body against @p exact, integrated
    * with the axisymmetric weight r by a Gauss rule of degree + 3 points.
    */
   LameErrors
-  lame_errors(const Body &body, const LameCylinder &exact);
+  lame_errors(const BodyDiscretization &body,
+              const Vector<double>     &solution,
+              const LameCylinder       &exact);
 } // namespace coaxfit
 
 #endif

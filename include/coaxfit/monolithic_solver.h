@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/sparsity_pattern.h>
 
-#include <coaxfit/body.h>
+#include <coaxfit/body_discretization.h>
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/interface_solver.h>
 #include <coaxfit/sparse_cholesky.h>
@@ -30,8 +30,8 @@ namespace coaxfit
   class MonolithicSolver : public InterfaceSolver
   {
   public:
-    MonolithicSolver(Body                      &shaft,
-                     Body                      &hub,
+    MonolithicSolver(const BodyDiscretization  &shaft,
+                     const BodyDiscretization  &hub,
                      const ContactInterface    &interface,
                      const UnilateralActiveSet &active_set,
                      unsigned int               max_steps);
@@ -39,12 +39,12 @@ namespace coaxfit
     bool
     run(std::ostream *progress) override;
 
-    /** Number of factorizations of the coupled system. */
-    unsigned int
-    n_factorizations() const
-    {
-      return factorizations;
-    }
+    /** The fields of the last coupled solve. */
+    std::pair<Vector<double>, Vector<double>>
+    solve_fields() override;
+
+    SolverStatistics
+    statistics() const override;
 
   private:
     /** Solve the coupled system with the current set of tied points. */
@@ -62,8 +62,9 @@ namespace coaxfit
     std::vector<unsigned int>
     tie_targets(const std::vector<bool> &tied) const;
 
-    Body                   &shaft;
-    Body                   &hub;
+    const BodyDiscretization &shaft;
+    const BodyDiscretization &hub;
+    Vector<double>            shaft_field, hub_field;
     const ContactInterface &interface;
     const unsigned int      max_steps;
     unsigned int            factorizations = 0;

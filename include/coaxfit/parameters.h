@@ -13,12 +13,26 @@ namespace coaxfit
 
   /**
    * Isotropic linear elastic material: Young's modulus in MPa and Poisson's
-   * ratio, with the Lame constants derived from them.
+   * ratio, with the Lame constants derived from them. Subsection
+   * `Material/Shaft` or `Material/Hub`.
    */
   struct Material
   {
     double E  = 2.0e5;
     double nu = 0.33;
+
+    /**
+     * Declare `E` and `nu`, bound to the members, for the body named
+     * @p body_label in the documentation. Both define the scene: they must
+     * be given.
+     */
+    void
+    declare_parameters(ParameterHandler &prm, const std::string &body_label);
+
+    /** Strict bounds that a pattern cannot state; @p path names the
+     * subsection in messages. */
+    void
+    validate(const std::string &path) const;
 
     /** First Lame constant lambda (MPa). */
     double
@@ -46,87 +60,24 @@ namespace coaxfit
   };
 
   /**
-   * Every knob of a coaxfit run. The values are read from a `.prm` file by
-   * a ParameterHandler (declare_parameters() documents each entry with its
-   * unit and allowed range), overridden by `--set Section/Name=value` on the
-   * command line, and checked by validate() before any work is done.
-   *
-   * Lengths are in mm, moduli in MPa. L1 and L2 are *half* lengths measured
-   * from the common mid-plane z = 0, as in the paper's table: each cylinder
-   * is 2 L long and only the half z >= 0 is modelled.
+   * Subsection `Geometry` (mm). L1 and L2 are *half* lengths measured from
+   * the common mid-plane z = 0, as in the paper's table: each cylinder is
+   * 2 L long and only the half z >= 0 is modelled. Every entry defines the
+   * scene and must be given.
    */
-  struct Parameters
+  struct GeometryParameters
   {
-    /** @name Geometry (mm) */
-    /** @{ */
     double R0 = 0.;   ///< inner radius of the shaft (0: solid shaft)
     double R1 = 100.; ///< nominal contact radius
     double R2 = 200.; ///< outer radius of the hub
     double L1 = 200.; ///< half length of the shaft
     double L2 = 100.; ///< half length of the hub
     double d  = 0.25; ///< radial interference
-    /** @} */
 
-    Material shaft; ///< material of D1 (shaft or tube)
-    Material hub;   ///< material of D2 (hub)
-
-    /** @name Mesh */
-    /** @{ */
-    unsigned int axial_cells        = 12;
-    unsigned int radial_cells       = 10;
-    double       grading_ratio      = 1.4;
-    unsigned int global_refinements = 0;
-    unsigned int degree             = 2;
-    /** Selective reduced integration of the volumetric (lambda) part. */
-    bool reduced_volumetric_integration = false;
-    /** @} */
-
-    /** Solver/Method: staggered (the paper's) or monolithic (reference). */
-    std::string solver_method = "staggered";
-
-    /** @name Coupling */
-    /** @{ */
-    double       alpha            = 0.8;
-    std::string  alpha_controller = "iqn-ils";
-    double       tolerance        = 1e-8;
-    unsigned int max_steps        = 200;
-    double       beta = 0.; ///< pointwise controller, (4.22); 0: automatic
-    double       aitken_omega       = 1.0;    ///< first Aitken relaxation
-    unsigned int iqn_columns        = 50;     ///< IQN-ILS history length
-    double       iqn_filter         = 1e-10;  ///< IQN-ILS QR filter
-    std::string  interface_operator = "auto"; ///< auto, full or condensed
-    /** @} */
-
-    /** Unilateral contact: the surfaces may separate (Contact/Unilateral). */
-    bool unilateral = true;
-    /** Contact/Active set update: auto, every step or when converged. */
-    std::string active_set_update = "auto";
-    /** Contact/Active set tolerance: inner convergence before an update. */
-    double active_set_tolerance = 1e-4;
-
-    /** @name Output */
-    /** @{ */
-    std::string output_directory; ///< resolved: never empty after parsing
-    bool        write_vtu    = true;
-    bool        print_timing = true;
-    /** @} */
-
-    /** Name of the case: the parameter file's base name. */
-    std::string case_name = "default";
-
-    /** Declare all entries, with documentation, in @p prm. */
-    static void
+    void
     declare_parameters(ParameterHandler &prm);
 
-    /** Read the values from a ParameterHandler that has been parsed. */
-    void
-    parse_parameters(ParameterHandler &prm);
-
-    /**
-     * Check every value and the relations between them (0 <= R0 < R1 < R2,
-     * positive lengths, E > 0, -1 < nu < 0.5, ...). Throws InputError with a
-     * one-line message naming the parameter, its value and the allowed range.
-     */
+    /** Relations between the radii and lengths. */
     void
     validate() const;
 
@@ -138,10 +89,210 @@ namespace coaxfit
     }
   };
 
+  /** Integration of the volumetric (lambda) part of the stiffness. */
+  enum class VolumetricIntegration
+  {
+    full,
+    reduced
+  };
+
+  /** Subsection `Mesh`: the graded meshes of both bodies. */
+  struct MeshParameters
+  {
+    unsigned int          axial_cells            = 12;
+    unsigned int          radial_cells           = 10;
+    double                grading_ratio          = 1.4;
+    unsigned int          global_refinements     = 0;
+    unsigned int          degree                 = 2;
+    VolumetricIntegration volumetric_integration = VolumetricIntegration::full;
+
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Selective reduced integration of the volumetric part. */
+    bool
+    reduced_volumetric_integration() const
+    {
+      return volumetric_integration == VolumetricIntegration::reduced;
+    }
+  };
+
+  /** Subsection `Solver`. */
+  enum class SolverMethod
+  {
+    staggered,
+    monolithic
+  };
+
+  struct SolverParameters
+  {
+    SolverMethod method = SolverMethod::staggered;
+
+    void
+    declare_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * The controller presets of `Coupling/Alpha controller`: each is an alpha
+   * rule with an accelerator (see CouplingParameters::alpha_rule() and
+   * CouplingParameters::accelerator()).
+   */
+  enum class AlphaControllerPreset
+  {
+    fixed,
+    winkler,
+    pointwise,
+    aitken,
+    iqn_ils
+  };
+
+  /** How alpha is chosen (`Coupling/Alpha rule`). */
+  enum class AlphaRuleType
+  {
+    automatic, ///< as the Alpha controller preset says
+    fixed,
+    winkler,
+    pointwise
+  };
+
+  /** Acceleration of the traction fixed point (`Coupling/Accelerator`). */
+  enum class AcceleratorType
+  {
+    automatic, ///< as the Alpha controller preset says
+    none,
+    aitken,
+    iqn_ils
+  };
+
+  /** Which operator of a body the coupling iterates with. */
+  enum class InterfaceOperatorType
+  {
+    automatic,
+    full,
+    condensed
+  };
+
+  /** Subsection `Coupling`: the staggered process. */
+  struct CouplingParameters
+  {
+    double                alpha      = 0.8;
+    AlphaControllerPreset controller = AlphaControllerPreset::iqn_ils;
+    AlphaRuleType         rule       = AlphaRuleType::automatic;
+    AcceleratorType       acceleration       = AcceleratorType::automatic;
+    double                tolerance          = 1e-8;
+    unsigned int          max_steps          = 200;
+    double                beta               = 0.; ///< (4.22); 0: automatic
+    double                aitken_omega       = 1.0;
+    unsigned int          iqn_columns        = 50;
+    double                iqn_filter         = 1e-10;
+    InterfaceOperatorType interface_operator = InterfaceOperatorType::automatic;
+
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Strict bounds that a pattern cannot state. */
+    void
+    validate() const;
+
+    /** The alpha rule in use: Alpha rule, or the preset's if automatic. */
+    AlphaRuleType
+    alpha_rule() const;
+
+    /** The accelerator in use: Accelerator, or the preset's if automatic. */
+    AcceleratorType
+    accelerator() const;
+  };
+
+  /** When the contact / separated flags change. */
+  enum class ActiveSetUpdateType
+  {
+    automatic,
+    every_step,
+    when_converged
+  };
+
+  /** Subsection `Contact`: the unilateral pass. */
+  struct ContactParameters
+  {
+    bool                unilateral           = true;
+    ActiveSetUpdateType active_set_update    = ActiveSetUpdateType::automatic;
+    double              active_set_tolerance = 1e-4;
+
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    validate() const;
+  };
+
+  /** Subsection `Output`. */
+  struct OutputParameters
+  {
+    /** As given; Parameters::output_directory() resolves an empty one. */
+    std::string directory;
+    bool        write_vtu    = true;
+    bool        print_timing = true;
+
+    void
+    declare_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * Every knob of a coaxfit run, one small struct per subsection of the
+   * `.prm` file. Each entry is declared once, with its documentation, unit
+   * and allowed range, by ParameterHandler::add_parameter() bound to its
+   * member; reading a file or a `--set Section/Name=value` override sets
+   * the member. Bounds live in the patterns; validate() checks only strict
+   * bounds and relations between entries.
+   *
+   * The entries that define the scene (geometry, interference, materials)
+   * have no silent default: a file must give them (or `--set`), see
+   * read_parameters(). The member defaults below are the paper's variant 5
+   * for programs that build a Parameters object directly (the tests).
+   */
+  struct Parameters
+  {
+    GeometryParameters geometry;
+    Material           shaft; ///< material of D1 (shaft or tube)
+    Material           hub;   ///< material of D2 (hub)
+    MeshParameters     mesh;
+    SolverParameters   solver;
+    CouplingParameters coupling;
+    ContactParameters  contact;
+    OutputParameters   output;
+
+    /** Name of the case: the parameter file's base name. */
+    std::string case_name = "default";
+
+    /**
+     * The parameters exactly as read (file and `--set` overrides), as a
+     * `.prm` file and as JSON: written to the output directory so that the
+     * run can be repeated. Empty for objects not made by read_parameters().
+     */
+    std::string used_prm, used_json;
+
+    /** Declare every entry in @p prm, bound to the members of this object. */
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Check what the patterns cannot: strict bounds and relations between
+     * entries. Throws InputError with a one-line message naming the
+     * parameter, its value and the allowed range.
+     */
+    void
+    validate() const;
+
+    /** The output directory: Output/Directory or output/<case name>. */
+    std::string
+    output_directory() const;
+  };
+
   /**
    * Read @p filename, apply the command line @p overrides (pairs of a
-   * `Section/Subsection/Name` path and a value) and validate. Every problem
-   * is reported as an InputError with a one-line message.
+   * `Section/Subsection/Name` path and a value), check that every entry of
+   * the scene was given, and validate. Every problem is reported as an
+   * InputError with a one-line message.
    */
   Parameters
   read_parameters(
@@ -151,6 +302,22 @@ namespace coaxfit
   /** Print every parameter with its default, pattern and documentation. */
   void
   print_parameters(std::ostream &out);
+
+  /** The name of an enumerator as written in a parameter file. */
+  std::string
+  to_string(SolverMethod value);
+  std::string
+  to_string(AlphaControllerPreset value);
+  std::string
+  to_string(AlphaRuleType value);
+  std::string
+  to_string(AcceleratorType value);
+  std::string
+  to_string(InterfaceOperatorType value);
+  std::string
+  to_string(ActiveSetUpdateType value);
+  std::string
+  to_string(VolumetricIntegration value);
 } // namespace coaxfit
 
 #endif

@@ -1,11 +1,15 @@
 #ifndef coaxfit_staggered_coupling_h
 #define coaxfit_staggered_coupling_h
 
-#include <coaxfit/alpha_controller.h>
-#include <coaxfit/body.h>
+#include <coaxfit/accelerator.h>
+#include <coaxfit/alpha_rule.h>
+#include <coaxfit/body_solver.h>
 #include <coaxfit/contact_interface.h>
+#include <coaxfit/interface_operator.h>
 #include <coaxfit/interface_solver.h>
+#include <coaxfit/parameters.h>
 
+#include <memory>
 #include <ostream>
 #include <vector>
 
@@ -20,9 +24,13 @@ namespace coaxfit
    * force F and return u1, u2 on S; the displacement mismatch is
    * du = u2 - u1 - d. The Dirichlet step then prescribes
    * u = u1 + (1 - alpha)(u2 - d - u1) to the shaft and u + d to the hub and
-   * returns the reactions F1, F2; the next Neumann step applies
-   * F = F1 + alpha (F2 - F1). Both bodies are solved concurrently in every
-   * step. With the unilateral pass (UnilateralActiveSet) tensile forces are
+   * returns the reactions F1, F2; the blend G = F1 + alpha (F2 - F1) is the
+   * image of the applied force under the fixed-point map of one double
+   * step, and the Accelerator turns (F, G) into the force of the next
+   * Neumann step. The AlphaRule chooses alpha after Neumann steps (with an
+   * accelerator only until its first estimate, so that the accelerated map
+   * stays the same). Both bodies are solved concurrently in every step.
+   * With the unilateral pass (UnilateralActiveSet) tensile forces are
    * set to zero and separated points stay traction free in the Dirichlet
    * step. The iteration has converged when the latest displacement mismatch
    * and the latest traction mismatch are both below the tolerance and the
@@ -33,12 +41,16 @@ namespace coaxfit
   class StaggeredCoupling : public InterfaceSolver
   {
   public:
-    StaggeredCoupling(InterfaceOperator         &shaft,
+    /**
+     * The coupling iterates with the operators @p shaft and @p hub (full or
+     * condensed); @p shaft_solver and @p hub_solver give the final fields.
+     */
+    StaggeredCoupling(BodySolver                &shaft_solver,
+                      BodySolver                &hub_solver,
+                      InterfaceOperator         &shaft,
                       InterfaceOperator         &hub,
                       const ContactInterface    &interface,
-                      AlphaController           &controller,
-                      double                     tolerance,
-                      unsigned int               max_steps,
+                      const CouplingParameters  &parameters,
                       const UnilateralActiveSet &active_set,
                       double                     active_set_tolerance);
 
@@ -49,16 +61,19 @@ namespace coaxfit
     bool
     run(std::ostream *progress) override;
 
-  private:
-    /**
-     * Relative displacement residual of the current state: |gap| where in
-     * contact, penetration where separated.
-     */
-    double
-    relative_gap_residual() const;
+    std::pair<Vector<double>, Vector<double>>
+    solve_fields() override;
 
+    SolverStatistics
+    statistics() const override;
+
+  private:
     void
     neumann_step();
+
+    /** Update the active set from the state of a Neumann step. */
+    void
+    update_active_set();
 
     void
     dirichlet_step();
@@ -67,22 +82,33 @@ namespace coaxfit
     void
     check_divergence() const;
 
+    /** Why the residuals look divergent or stalled; empty if they do not. */
+    std::string
+    divergence_reason() const;
+
     /** Winkler estimate of the convergent alpha range, for messages. */
     std::string
     suggested_alpha_range() const;
 
-    InterfaceOperator      &shaft;
-    InterfaceOperator      &hub;
-    const ContactInterface &interface;
-    AlphaController        &controller;
-    const double            tolerance;
-    const unsigned int      max_steps;
+    /** One progress line for the latest step. */
+    void
+    print_step(std::ostream &out) const;
 
-    std::vector<double> next_force; ///< force for the next Neumann step
-    std::vector<double> neumann_force, neumann_u1, neumann_u2;
+    BodySolver                  &shaft_solver;
+    BodySolver                  &hub_solver;
+    InterfaceOperator           &shaft;
+    InterfaceOperator           &hub;
+    const ContactInterface      &interface;
+    std::unique_ptr<AlphaRule>   rule;
+    std::unique_ptr<Accelerator> accelerator;
+    const bool                   accelerated;
+    const double                 tolerance;
+    const unsigned int           max_steps;
+
+    Vector<double> next_force; ///< force for the next Neumann step
+    Vector<double> neumann_force, neumann_u1, neumann_u2;
 
     const double active_set_tolerance;
-    bool         active_set_changed  = false;
     bool         active_set_verified = false;
     unsigned int last_change_step    = 0;
   };

@@ -1,0 +1,178 @@
+#ifndef coaxfit_body_discretization_h
+#define coaxfit_body_discretization_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <coaxfit/mesh.h>
+#include <coaxfit/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * The discretization of one axisymmetric linear elastic cylinder: its
+   * Triangulation<2> in the (r, z) half section, FESystem(FE_Q(p)^2) for
+   * (u_r, u_z), the r-weighted stiffness matrix with the hoop strain u_r/r,
+   * and the homogeneous conditions u_r = 0 on the axis and u_z = 0 on the
+   * symmetry plane.
+   *
+   * Its contact surface S is described by the interface points: the
+   * support points of u_r on S, ordered by z and numbered 0..n-1, each with
+   * its DoF and its lumped weight w_i = int_S N_i r dz (the row sum of the
+   * interface mass matrix, assembled directly as a vector, as step-42's
+   * assemble_mass_matrix_diagonal does).
+   *
+   * The class knows nothing about solving: BodySolver factorizes and solves
+   * with its matrix. Fields for output are computed by an explicit call,
+   * output_results(), from a solution vector the caller passes.
+   */
+  class BodyDiscretization
+  {
+  public:
+    /**
+     * With @p reduced_volumetric_integration, the lambda part of the
+     * stiffness is integrated with the p-point Gauss rule per direction
+     * (selective reduced integration against volumetric locking), the
+     * 2 mu part with p + 1 points.
+     */
+    BodyDiscretization(const BodyGeometry &geometry,
+                       const Material     &material,
+                       unsigned int        degree,
+                       bool reduced_volumetric_integration = false);
+
+    /** Build the mesh, distribute DoFs, set constraints and sparsity. */
+    void
+    setup_system();
+
+    /** Assemble the stiffness matrix and the interface weights. */
+    void
+    assemble_system();
+
+    /**
+     * Write @p solution as VTU: displacement (mm), the stresses sigma_rr,
+     * sigma_zz, sigma_tt (hoop), sigma_rz and von Mises (MPa), and with
+     * reduced integration the volumetric stress.
+     */
+    void
+    output_results(const Vector<double> &solution,
+                   const std::string    &filename) const;
+
+    /** Number of interface points. */
+    unsigned int
+    n_interface_points() const
+    {
+      return interface_dofs.size();
+    }
+
+    /** Axial coordinate of each interface point (mm), increasing. */
+    const std::vector<double> &
+    interface_z() const
+    {
+      return interface_z_coordinates;
+    }
+
+    /** Lumped weights w_i = int_S N_i r dz (mm^2) of the interface points. */
+    const Vector<double> &
+    interface_weights() const
+    {
+      return weights;
+    }
+
+    /** The DoF of u_r at each interface point. */
+    const std::vector<types::global_dof_index> &
+    get_interface_dofs() const
+    {
+      return interface_dofs;
+    }
+
+    const BodyGeometry &
+    geometry() const
+    {
+      return body_geometry;
+    }
+
+    const Material &
+    material() const
+    {
+      return body_material;
+    }
+
+    const DoFHandler<2> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /** The constraints of the axis and the symmetry plane. */
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
+    const SparsityPattern &
+    get_sparsity_pattern() const
+    {
+      return sparsity_pattern;
+    }
+
+    /** The assembled stiffness matrix (homogeneous conditions applied). */
+    const SparseMatrix<double> &
+    get_stiffness_matrix() const
+    {
+      return stiffness_matrix;
+    }
+
+    unsigned int
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    unsigned int
+    n_cells() const
+    {
+      return triangulation.n_active_cells();
+    }
+
+  private:
+    /** The interface points: DoFs of u_r on S, ordered by z. */
+    void
+    collect_interface_points();
+
+    /**
+     * With reduced integration: a DoFHandler for the displacement plus the
+     * volumetric stress at the reduced points (FE_DGQArbitraryNodes on the
+     * p-point Gauss rule), and the field on it.
+     */
+    void
+    volumetric_field(const Vector<double> &solution,
+                     DoFHandler<2>        &dof_handler_out,
+                     Vector<double>       &field) const;
+
+    const BodyGeometry body_geometry;
+    const Material     body_material;
+    const bool         reduced_volumetric_integration;
+
+    Triangulation<2>          triangulation;
+    const FESystem<2>         fe;
+    DoFHandler<2>             dof_handler;
+    AffineConstraints<double> constraints;
+    SparsityPattern           sparsity_pattern;
+    SparseMatrix<double>      stiffness_matrix;
+
+    std::vector<types::global_dof_index> interface_dofs;
+    std::vector<double>                  interface_z_coordinates;
+    Vector<double>                       weights;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,146 @@
+#ifndef coaxfit_result_writers_h
+#define coaxfit_result_writers_h
+
+#include <deal.II/lac/vector.h>
+
+#include <coaxfit/body_discretization.h>
+#include <coaxfit/contact_interface.h>
+#include <coaxfit/interface_solver.h>
+#include <coaxfit/parameters.h>
+#include <coaxfit/pressure_summary.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /** Everything a result writer may read about a finished run. */
+  struct RunResults
+  {
+    const Parameters                    &parameters;
+    const BodyDiscretization            &shaft;
+    const BodyDiscretization            &hub;
+    const Vector<double>                &shaft_field;
+    const Vector<double>                &hub_field;
+    const ContactInterface              &interface;
+    const InterfaceSolver               &solver;
+    const PressureSummary               &pressure;
+    const Complementarity               &complementarity;
+    const std::map<std::string, double> &timing;   ///< wall times (s)
+    const std::vector<std::string>      &warnings; ///< one line each
+  };
+
+  /**
+   * Writes one result file of a run into a directory and returns one line
+   * for the console that says what it wrote (ASPECT's postprocessors are
+   * the model). Adding an output file is one new writer, listed in
+   * make_result_writers().
+   */
+  class ResultWriter
+  {
+  public:
+    virtual ~ResultWriter() = default;
+
+    virtual std::string
+    write(const RunResults &results, const std::string &directory) const = 0;
+  };
+
+  /** contact_pressure.csv: z, pressure, u_r of both bodies, gap, status. */
+  class ContactPressureWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults &results,
+          const std::string &directory) const override;
+  };
+
+  /** convergence.csv: one row per coupling step. */
+  class ConvergenceWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults &results,
+          const std::string &directory) const override;
+  };
+
+  /**
+   * parameters.prm and parameters.json: the parameters exactly as read
+   * (file and --set overrides); `coaxfit DIR/parameters.prm` repeats the
+   * run.
+   */
+  class ParametersWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults &results,
+          const std::string &directory) const override;
+  };
+
+  /** shaft.vtu or hub.vtu: the displacement and stress fields of a body. */
+  class BodyVtuWriter : public ResultWriter
+  {
+  public:
+    /** @p shaft: which body to write. */
+    explicit BodyVtuWriter(bool shaft);
+
+    std::string
+    write(const RunResults &results,
+          const std::string &directory) const override;
+
+  private:
+    const bool shaft;
+  };
+
+  /**
+   * interface.vtp: the contact surface as a polyline in the (r, z) plane
+   * with pressure, gap and status (1 contact, 0 separated), for ParaView.
+   */
+  class InterfaceVtpWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults &results,
+          const std::string &directory) const override;
+  };
+
+  /** solution.pvd: shaft.vtu, hub.vtu and interface.vtp as one collection. */
+  class PvdWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults &results,
+          const std::string &directory) const override;
+  };
+
+  /**
+   * summary.json: everything a script needs to know about a run, always
+   * valid JSON (non-finite numbers are null). Written last, so that it can
+   * report the time the other writers took.
+   */
+  class SummaryWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults &results,
+          const std::string &directory) const override;
+  };
+
+  /** The writers of the files that @p output asks for, summary.json aside. */
+  std::vector<std::unique_ptr<ResultWriter>>
+  make_result_writers(const OutputParameters &output);
+
+  /**
+   * Open @p filename for writing with 15 significant digits; throws if it
+   * cannot be opened.
+   */
+  std::ofstream
+  open_result_file(const std::string &filename);
+
+  /** Close @p out and throw if anything written to it was lost. */
+  void
+  close_result_file(std::ofstream &out, const std::string &filename);
+} // namespace coaxfit
+
+#endif

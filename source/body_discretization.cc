@@ -1,0 +1,306 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <coaxfit/axisymmetric.h>
+#include <coaxfit/body_discretization.h>
+#include <coaxfit/stress_postprocessor.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+
+namespace coaxfit
+{
+  BodyDiscretization::BodyDiscretization(
+    const BodyGeometry &geometry,
+    const Material     &material,
+    const unsigned int  degree,
+    const bool          reduced_volumetric_integration)
+    : body_geometry(geometry)
+    , body_material(material)
+    , reduced_volumetric_integration(reduced_volumetric_integration)
+    , fe(FE_Q<2>(degree), 2)
+    , dof_handler(triangulation)
+  {}
+
+
+
+  void
+  BodyDiscretization::setup_system()
+  {
+    make_body_mesh(triangulation, body_geometry);
+    dof_handler.distribute_dofs(fe);
+
+    constraints.clear();
+    const FEValuesExtractors::Scalar u_r(0), u_z(1);
+    if (body_geometry.r_inner == 0.)
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               BoundaryId::axis,
+                                               Functions::ZeroFunction<2>(2),
+                                               constraints,
+                                               fe.component_mask(u_r));
+    VectorTools::interpolate_boundary_values(dof_handler,
+                                             BoundaryId::symmetry,
+                                             Functions::ZeroFunction<2>(2),
+                                             constraints,
+                                             fe.component_mask(u_z));
+    constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    sparsity_pattern.copy_from(dsp);
+    stiffness_matrix.reinit(sparsity_pattern);
+    collect_interface_points();
+  }
+
+
+
+  void
+  BodyDiscretization::collect_interface_points()
+  {
+    const FEValuesExtractors::Scalar u_r(0);
+    const IndexSet                   on_contact =
+      DoFTools::extract_boundary_dofs(dof_handler,
+                                      fe.component_mask(u_r),
+                                      {BoundaryId::contact});
+    std::map<types::global_dof_index, Point<2>> support_points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
+                                         dof_handler,
+                                         support_points);
+    std::vector<std::pair<double, types::global_dof_index>> by_z;
+    for (const auto dof : on_contact)
+      by_z.emplace_back(support_points[dof][1], dof);
+    std::sort(by_z.begin(), by_z.end());
+    interface_dofs.clear();
+    interface_z_coordinates.clear();
+    for (const auto &[z, dof] : by_z)
+      {
+        interface_z_coordinates.push_back(z);
+        interface_dofs.push_back(dof);
+      }
+    weights.reinit(interface_dofs.size());
+  }
+
+
+
+  void
+  BodyDiscretization::assemble_system()
+  {
+    const QGauss<2>    quadrature(fe.degree + 1);
+    const QGauss<2>    reduced_quadrature(fe.degree);
+    const QGauss<1>    face_quadrature(fe.degree + 1);
+    const auto         flags = update_values | update_gradients |
+                       update_quadrature_points | update_JxW_values;
+    FEValues<2>        fe_values(fe, quadrature, flags);
+    FEValues<2>        reduced_values(fe, reduced_quadrature, flags);
+    FEFaceValues<2>    fe_face_values(fe,
+                                   face_quadrature,
+                                   update_values | update_quadrature_points |
+                                     update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
+    std::vector<Axisymmetric::Vector4>   B(dofs_per_cell);
+    // Selective reduced integration: the full rule sees a material without
+    // lambda (same mu), the reduced rule adds lambda tr(e_i) tr(e_j).
+    const Material full_rule_material = reduced_volumetric_integration ?
+                                          body_material.without_lambda() :
+                                          body_material;
+
+    std::map<types::global_dof_index, unsigned int> interface_index;
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      interface_index[interface_dofs[i]] = i;
+
+    // The strain of every shape function at quadrature point q.
+    const auto shape_strains = [&](const FEValues<2>  &values,
+                                   const unsigned int q) {
+      const double r = values.quadrature_point(q)[0];
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const unsigned int comp = fe.system_to_component_index(i).first;
+          const double       N    = values.shape_value(i, q);
+          const Tensor<1, 2> grad = values.shape_grad(i, q);
+          const Tensor<1, 2> zero;
+          B[i] = (comp == 0) ? Axisymmetric::strain(N, grad, zero, r) :
+                               Axisymmetric::strain(0., zero, grad, r);
+        }
+      return r * values.JxW(q);
+    };
+
+    stiffness_matrix = 0;
+    weights          = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_matrix = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double weight = shape_strains(fe_values, q);
+            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              {
+                const Axisymmetric::Vector4 sigma_j =
+                  Axisymmetric::stress(full_rule_material, B[j]);
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  cell_matrix(i, j) +=
+                    (B[i][0] * sigma_j[0] + B[i][1] * sigma_j[1] +
+                     B[i][2] * sigma_j[2] + B[i][3] * sigma_j[3]) *
+                    weight;
+              }
+          }
+        if (reduced_volumetric_integration)
+          {
+            reduced_values.reinit(cell);
+            const double lambda = body_material.lambda();
+            for (const unsigned int q :
+                 reduced_values.quadrature_point_indices())
+              {
+                const double weight = shape_strains(reduced_values, q);
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    cell_matrix(i, j) += lambda * Axisymmetric::trace(B[i]) *
+                                         Axisymmetric::trace(B[j]) * weight;
+              }
+          }
+        cell->get_dof_indices(local_dof_indices);
+        constraints.distribute_local_to_global(cell_matrix,
+                                               local_dof_indices,
+                                               stiffness_matrix);
+
+        // Interface weights w_i = int_S N_i r dz.
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == BoundaryId::contact)
+            {
+              fe_face_values.reinit(cell, face);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const auto point = interface_index.find(local_dof_indices[i]);
+                  if (point == interface_index.end())
+                    continue;
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    weights[point->second] +=
+                      fe_face_values.shape_value(i, q) *
+                      fe_face_values.quadrature_point(q)[0] *
+                      fe_face_values.JxW(q);
+                }
+            }
+      }
+  }
+
+
+
+  void
+  BodyDiscretization::volumetric_field(const Vector<double> &solution,
+                                       DoFHandler<2>        &dof_handler_out,
+                                       Vector<double>       &field) const
+  {
+    const FESystem<2> fe_out(FE_Q<2>(fe.degree),
+                             2,
+                             FE_DGQArbitraryNodes<2>(QGauss<1>(fe.degree)),
+                             1);
+    dof_handler_out.distribute_dofs(fe_out);
+    field.reinit(dof_handler_out.n_dofs());
+    const QGauss<2>             reduced(fe.degree);
+    FEValues<2>                 values(fe,
+                       reduced,
+                       update_values | update_gradients |
+                         update_quadrature_points);
+    std::vector<Vector<double>> u(reduced.size(), Vector<double>(2));
+    std::vector<std::vector<Tensor<1, 2>>> grad(reduced.size(),
+                                                std::vector<Tensor<1, 2>>(2));
+    std::vector<types::global_dof_index>   dofs(fe.n_dofs_per_cell()),
+      dofs_out(fe_out.n_dofs_per_cell());
+    // The reduced point at each node of the volumetric element.
+    std::vector<unsigned int> point_of_node;
+    for (const Point<2> &node :
+         fe_out.base_element(1).get_unit_support_points())
+      {
+        unsigned int q = 0;
+        for (unsigned int k = 1; k < reduced.size(); ++k)
+          if (reduced.point(k).distance(node) <
+              reduced.point(q).distance(node))
+            q = k;
+        point_of_node.push_back(q);
+      }
+    auto cell_out = dof_handler_out.begin_active();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        values.reinit(cell);
+        values.get_function_values(solution, u);
+        values.get_function_gradients(solution, grad);
+        cell->get_dof_indices(dofs);
+        cell_out->get_dof_indices(dofs_out);
+        for (unsigned int i = 0; i < fe_out.n_dofs_per_cell(); ++i)
+          {
+            const auto base = fe_out.system_to_base_index(i);
+            if (base.first.first == 0) // displacement component
+              field[dofs_out[i]] = solution[dofs[fe.component_to_system_index(
+                base.first.second, base.second)]];
+            else
+              {
+                const unsigned int          q = point_of_node[base.second];
+                const Axisymmetric::Vector4 e =
+                  Axisymmetric::strain(u[q][0],
+                                       grad[q][0],
+                                       grad[q][1],
+                                       values.quadrature_point(q)[0]);
+                field[dofs_out[i]] =
+                  body_material.lambda() * Axisymmetric::trace(e);
+              }
+          }
+        ++cell_out;
+      }
+  }
+
+
+
+  void
+  BodyDiscretization::output_results(const Vector<double> &solution,
+                                     const std::string    &filename) const
+  {
+    DoFHandler<2>  dof_handler_out(triangulation);
+    Vector<double> field;
+    if (reduced_volumetric_integration)
+      volumetric_field(solution, dof_handler_out, field);
+
+    const StressPostprocessor postprocessor(body_material,
+                                            reduced_volumetric_integration);
+    DataOut<2>                data_out;
+    std::vector<std::string>  names(2, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(2,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    if (reduced_volumetric_integration)
+      {
+        names.emplace_back("volumetric_stress");
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
+    const DoFHandler<2> &handler =
+      reduced_volumetric_integration ? dof_handler_out : dof_handler;
+    const Vector<double> &data =
+      reduced_volumetric_integration ? field : solution;
+    data_out.attach_dof_handler(handler);
+    data_out.add_data_vector(data,
+                             names,
+                             DataOut<2>::type_dof_data,
+                             interpretation);
+    data_out.add_data_vector(data, postprocessor);
+    data_out.build_patches(fe.degree);
+
+    std::ofstream out(filename);
+    if (!out)
+      throw std::runtime_error("cannot write '" + filename + "'");
+    data_out.write_vtu(out);
+    out.close();
+    if (!out)
+      throw std::runtime_error("cannot write '" + filename + "'");
+  }
+} // namespace coaxfit

@@ -1,0 +1,23 @@
+#include <coaxfit/result_writers.h>
+
+#include <fstream>
+
+namespace coaxfit
+{
+  std::string
+  ConvergenceWriter::write(const RunResults  &results,
+                           const std::string &directory) const
+  {
+    const std::string name = "convergence.csv";
+    std::ofstream     out  = open_result_file(directory + "/" + name);
+    out << "step,kind,alpha,displacement_mismatch_relative,"
+           "traction_mismatch_relative\n";
+    for (const CouplingStep &s : results.solver.history())
+      out << s.step << ',' << (s.neumann ? "neumann" : "dirichlet") << ','
+          << s.alpha << ',' << s.displacement_mismatch << ','
+          << s.traction_mismatch << '\n';
+    close_result_file(out, directory + "/" + name);
+    return name + ": " + std::to_string(results.solver.history().size()) +
+           " steps";
+  }
+} // namespace coaxfit

@@ -1,0 +1,140 @@
+#include <coaxfit/result_writers.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    using Json = nlohmann::ordered_json;
+
+    Json
+    geometry_and_mesh(const RunResults &results)
+    {
+      const Parameters &p = results.parameters;
+      const auto       &g = p.geometry;
+      Json              j;
+      j["geometry"] = {{"R0", g.R0},
+                       {"R1", g.R1},
+                       {"R2", g.R2},
+                       {"L1", g.L1},
+                       {"L2", g.L2},
+                       {"d", g.d},
+                       {"contact_length", g.contact_length()},
+                       {"units", "mm, L1 and L2 are half lengths"}};
+      j["material"] = {{"shaft", {{"E", p.shaft.E}, {"nu", p.shaft.nu}}},
+                       {"hub", {{"E", p.hub.E}, {"nu", p.hub.nu}}}};
+      j["mesh"]     = {
+        {"degree", p.mesh.degree},
+        {"global_refinements", p.mesh.global_refinements},
+        {"cells",
+         {{"shaft", results.shaft.n_cells()}, {"hub", results.hub.n_cells()}}},
+        {"dofs",
+         {{"shaft", results.shaft.n_dofs()}, {"hub", results.hub.n_dofs()}}},
+        {"interface_points", results.interface.n_points()}};
+      return j;
+    }
+
+    Json
+    contact(const RunResults &results)
+    {
+      const UnilateralActiveSet &set = results.solver.get_active_set();
+      const double               length =
+        results.parameters.geometry.contact_length();
+      const auto zones = set.separated_zones(results.interface.z(), length);
+      double     separated = 0.;
+      Json       zone_list = Json::array();
+      for (const auto &zone : zones)
+        {
+          separated += zone.second - zone.first;
+          zone_list.push_back({zone.first, zone.second});
+        }
+      return {{"unilateral", set.enabled()},
+              {"active_set_update",
+               set.update_mode() == UnilateralActiveSet::Update::every_step ?
+                 "every step" :
+                 "when converged"},
+              {"contact_length", length - separated},
+              {"separated_length", separated},
+              {"separated_points", set.n_separated()},
+              {"separated_zones", zone_list}};
+    }
+
+    Json
+    coupling_and_solver(const RunResults &results)
+    {
+      const InterfaceSolver &solver     = results.solver;
+      const SolverStatistics statistics = solver.statistics();
+      const auto            &c          = results.parameters.coupling;
+      Json                   alpha      = Json::array();
+      for (const CouplingStep &s : solver.history())
+        alpha.push_back(s.alpha);
+      Json j;
+      j["coupling"]  = {{"controller",
+                        statistics.method == "monolithic" ?
+                           std::string("monolithic") :
+                           to_string(c.controller)},
+                       {"alpha_rule", statistics.alpha_rule},
+                       {"accelerator", statistics.accelerator},
+                       {"tolerance", c.tolerance},
+                       {"max_steps", c.max_steps},
+                       {"alpha_history", alpha}};
+      j["residuals"] = {{"displacement_relative",
+                         solver.displacement_residual()},
+                        {"traction_relative", solver.traction_residual()}};
+      j["solver"]    = {{"method", statistics.method},
+                     {"factorizations", statistics.factorizations},
+                     {"solves", statistics.solves}};
+      return j;
+    }
+  } // namespace
+
+
+
+  std::string
+  SummaryWriter::write(const RunResults  &results,
+                       const std::string &directory) const
+  {
+    const PressureSummary &ps = results.pressure;
+    Json                   j;
+    j["case"]                          = results.parameters.case_name;
+    j["converged"]                     = results.solver.converged();
+    j["iterations"]                    = results.solver.n_steps();
+    j["iterations_to_paper_criterion"] =
+      results.solver.steps_to_displacement_mismatch(1e-2);
+    j.update(geometry_and_mesh(results));
+    j.update(coupling_and_solver(results));
+    j["pressure"]        = {{"units", "MPa, compression positive"},
+                     {"at_mid_plane", ps.at_mid_plane},
+                     {"mean", ps.mean},
+                     {"min", ps.min},
+                     {"z_of_min", ps.z_of_min},
+                     {"max", ps.max},
+                     {"z_of_max", ps.z_of_max},
+                     {"lame", ps.lame},
+                     {"tensile", ps.min < 0.}};
+    j["contact"]         = contact(results);
+    j["active_set"]      = {{"changes",
+                        results.solver.get_active_set().n_changes()}};
+    j["complementarity"] = {
+      {"max_tension_relative", results.complementarity.max_tension_relative},
+      {"max_penetration_relative",
+       results.complementarity.max_penetration_relative},
+      {"max_pressure_gap_relative",
+       results.complementarity.max_pressure_gap_relative}};
+    j["warnings"] = results.warnings;
+    Json timing(results.timing);
+    timing["units"] = "s";
+    j["timing"]     = timing;
+
+    const std::string name = "summary.json";
+    std::ofstream     out  = open_result_file(directory + "/" + name);
+    // Non-finite numbers become null; bytes that are not UTF-8 (a file
+    // name) are replaced, so the file is always valid JSON.
+    out << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+    close_result_file(out, directory + "/" + name);
+    return name + ": the figures of this run";
+  }
+} // namespace coaxfit

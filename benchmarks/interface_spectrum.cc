@@ -27,8 +27,8 @@ main(int argc, char **argv)
   using namespace coaxfit;
   try
     {
-      const std::string usage =
-        "usage: coaxfit-spectrum [--set Section/Name=value]... FILE.prm";
+      const std::string usage
+        = "usage: coaxfit-spectrum [--set Section/Name=value]... FILE.prm";
       std::vector<std::pair<std::string, std::string>> overrides;
       std::string                                      filename;
       for (int i = 1; i < argc; ++i)
@@ -96,8 +96,8 @@ main(int argc, char **argv)
       const double best = 1. / (1. + std::sqrt(lambda.front() * lambda.back()));
 
       std::cout << std::setprecision(4) << "case " << p.case_name << ": " << n
-                << " interface points, FE_Q(" << p.mesh.degree << "), refinement "
-                << p.mesh.global_refinements << '\n'
+                << " interface points, FE_Q(" << p.mesh.degree
+                << "), refinement " << p.mesh.global_refinements << '\n'
                 << "  eigenvalues of K1 K2^-1 in [" << lambda.front() << ", "
                 << lambda.back() << "]\n"
                 << "  best constant alpha " << best << ", contraction per "
@@ -107,9 +107,9 @@ main(int argc, char **argv)
       else
         std::cout << "  constant alpha converges for " << lo
                   << " <= alpha <= " << hi << '\n';
-      std::cout << "  alpha = " << p.coupling.alpha << " (Coupling/Alpha): contraction "
-                << rate(p.coupling.alpha) << (rate(p.coupling.alpha) < 1. ? "" : " (diverges)")
-                << '\n';
+      std::cout << "  alpha = " << p.coupling.alpha
+                << " (Coupling/Alpha): contraction " << rate(p.coupling.alpha)
+                << (rate(p.coupling.alpha) < 1. ? "" : " (diverges)") << '\n';
       return 0;
     }
   catch (const std::exception &e)

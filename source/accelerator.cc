@@ -51,8 +51,8 @@ namespace coaxfit
         change -= last_residual;
         const double norm2 = change.norm_sqr();
         if (norm2 > 0.)
-          omega =
-            std::clamp(-omega * (last_residual * change) / norm2, 1e-3, 2.);
+          omega
+            = std::clamp(-omega * (last_residual * change) / norm2, 1e-3, 2.);
       }
     last_residual = residual;
     g             = x;
@@ -104,9 +104,9 @@ namespace coaxfit
     // Columns newest first; modified Gram-Schmidt with the QR filter: a
     // column whose part orthogonal to the newer ones is below filter times
     // its norm carries no new information and is dropped.
-    const Vector<double>             &r = residuals.back();
-    std::vector<Vector<double>>       q, w;
-    std::vector<std::vector<double>>  R; // R[j][k], upper triangular
+    const Vector<double>            &r = residuals.back();
+    std::vector<Vector<double>>      q, w;
+    std::vector<std::vector<double>> R; // R[j][k], upper triangular
     for (unsigned int k = m; k-- > 0;)
       {
         Vector<double> v(residuals[k + 1]);

@@ -66,10 +66,10 @@ namespace coaxfit
   BodyDiscretization::collect_interface_points()
   {
     const FEValuesExtractors::Scalar u_r(0);
-    const IndexSet                   on_contact =
-      DoFTools::extract_boundary_dofs(dof_handler,
-                                      fe.component_mask(u_r),
-                                      {BoundaryId::contact});
+    const IndexSet                   on_contact
+      = DoFTools::extract_boundary_dofs(dof_handler,
+                                        fe.component_mask(u_r),
+                                        {BoundaryId::contact});
     std::map<types::global_dof_index, Point<2>> support_points;
     DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
                                          dof_handler,
@@ -93,17 +93,17 @@ namespace coaxfit
   void
   BodyDiscretization::assemble_system()
   {
-    const QGauss<2>    quadrature(fe.degree + 1);
-    const QGauss<2>    reduced_quadrature(fe.degree);
-    const QGauss<1>    face_quadrature(fe.degree + 1);
-    const auto         flags = update_values | update_gradients |
-                       update_quadrature_points | update_JxW_values;
+    const QGauss<2> quadrature(fe.degree + 1);
+    const QGauss<2> reduced_quadrature(fe.degree);
+    const QGauss<1> face_quadrature(fe.degree + 1);
+    const auto      flags = update_values | update_gradients
+                       | update_quadrature_points | update_JxW_values;
     FEValues<2>        fe_values(fe, quadrature, flags);
     FEValues<2>        reduced_values(fe, reduced_quadrature, flags);
     FEFaceValues<2>    fe_face_values(fe,
                                    face_quadrature,
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
+                                   update_values | update_quadrature_points
+                                     | update_JxW_values);
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
@@ -119,20 +119,20 @@ namespace coaxfit
       interface_index[interface_dofs[i]] = i;
 
     // The strain of every shape function at quadrature point q.
-    const auto shape_strains = [&](const FEValues<2>  &values,
-                                   const unsigned int q) {
-      const double r = values.quadrature_point(q)[0];
-      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        {
-          const unsigned int comp = fe.system_to_component_index(i).first;
-          const double       N    = values.shape_value(i, q);
-          const Tensor<1, 2> grad = values.shape_grad(i, q);
-          const Tensor<1, 2> zero;
-          B[i] = (comp == 0) ? Axisymmetric::strain(N, grad, zero, r) :
-                               Axisymmetric::strain(0., zero, grad, r);
-        }
-      return r * values.JxW(q);
-    };
+    const auto shape_strains
+      = [&](const FEValues<2> &values, const unsigned int q) {
+          const double r = values.quadrature_point(q)[0];
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const unsigned int comp = fe.system_to_component_index(i).first;
+              const double       N    = values.shape_value(i, q);
+              const Tensor<1, 2> grad = values.shape_grad(i, q);
+              const Tensor<1, 2> zero;
+              B[i] = (comp == 0) ? Axisymmetric::strain(N, grad, zero, r) :
+                                   Axisymmetric::strain(0., zero, grad, r);
+            }
+          return r * values.JxW(q);
+        };
 
     stiffness_matrix = 0;
     weights          = 0;
@@ -145,13 +145,13 @@ namespace coaxfit
             const double weight = shape_strains(fe_values, q);
             for (unsigned int j = 0; j < dofs_per_cell; ++j)
               {
-                const Axisymmetric::Vector4 sigma_j =
-                  Axisymmetric::stress(full_rule_material, B[j]);
+                const Axisymmetric::Vector4 sigma_j
+                  = Axisymmetric::stress(full_rule_material, B[j]);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  cell_matrix(i, j) +=
-                    (B[i][0] * sigma_j[0] + B[i][1] * sigma_j[1] +
-                     B[i][2] * sigma_j[2] + B[i][3] * sigma_j[3]) *
-                    weight;
+                  cell_matrix(i, j)
+                    += (B[i][0] * sigma_j[0] + B[i][1] * sigma_j[1]
+                        + B[i][2] * sigma_j[2] + B[i][3] * sigma_j[3])
+                       * weight;
               }
           }
         if (reduced_volumetric_integration)
@@ -164,8 +164,8 @@ namespace coaxfit
                 const double weight = shape_strains(reduced_values, q);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    cell_matrix(i, j) += lambda * Axisymmetric::trace(B[i]) *
-                                         Axisymmetric::trace(B[j]) * weight;
+                    cell_matrix(i, j) += lambda * Axisymmetric::trace(B[i])
+                                         * Axisymmetric::trace(B[j]) * weight;
               }
           }
         cell->get_dof_indices(local_dof_indices);
@@ -185,10 +185,10 @@ namespace coaxfit
                     continue;
                   for (const unsigned int q :
                        fe_face_values.quadrature_point_indices())
-                    weights[point->second] +=
-                      fe_face_values.shape_value(i, q) *
-                      fe_face_values.quadrature_point(q)[0] *
-                      fe_face_values.JxW(q);
+                    weights[point->second]
+                      += fe_face_values.shape_value(i, q)
+                         * fe_face_values.quadrature_point(q)[0]
+                         * fe_face_values.JxW(q);
                 }
             }
       }
@@ -207,12 +207,10 @@ namespace coaxfit
                              1);
     dof_handler_out.distribute_dofs(fe_out);
     field.reinit(dof_handler_out.n_dofs());
-    const QGauss<2>             reduced(fe.degree);
-    FEValues<2>                 values(fe,
-                       reduced,
-                       update_values | update_gradients |
-                         update_quadrature_points);
-    std::vector<Vector<double>> u(reduced.size(), Vector<double>(2));
+    const QGauss<2> reduced(fe.degree);
+    FEValues<2>     values(
+      fe, reduced, update_values | update_gradients | update_quadrature_points);
+    std::vector<Vector<double>>            u(reduced.size(), Vector<double>(2));
     std::vector<std::vector<Tensor<1, 2>>> grad(reduced.size(),
                                                 std::vector<Tensor<1, 2>>(2));
     std::vector<types::global_dof_index>   dofs(fe.n_dofs_per_cell()),
@@ -224,8 +222,7 @@ namespace coaxfit
       {
         unsigned int q = 0;
         for (unsigned int k = 1; k < reduced.size(); ++k)
-          if (reduced.point(k).distance(node) <
-              reduced.point(q).distance(node))
+          if (reduced.point(k).distance(node) < reduced.point(q).distance(node))
             q = k;
         point_of_node.push_back(q);
       }
@@ -241,18 +238,19 @@ namespace coaxfit
           {
             const auto base = fe_out.system_to_base_index(i);
             if (base.first.first == 0) // displacement component
-              field[dofs_out[i]] = solution[dofs[fe.component_to_system_index(
-                base.first.second, base.second)]];
+              field[dofs_out[i]]
+                = solution[dofs[fe.component_to_system_index(base.first.second,
+                                                             base.second)]];
             else
               {
                 const unsigned int          q = point_of_node[base.second];
-                const Axisymmetric::Vector4 e =
-                  Axisymmetric::strain(u[q][0],
-                                       grad[q][0],
-                                       grad[q][1],
-                                       values.quadrature_point(q)[0]);
-                field[dofs_out[i]] =
-                  body_material.lambda() * Axisymmetric::trace(e);
+                const Axisymmetric::Vector4 e
+                  = Axisymmetric::strain(u[q][0],
+                                         grad[q][0],
+                                         grad[q][1],
+                                         values.quadrature_point(q)[0]);
+                field[dofs_out[i]]
+                  = body_material.lambda() * Axisymmetric::trace(e);
               }
           }
         ++cell_out;
@@ -283,10 +281,10 @@ namespace coaxfit
         interpretation.push_back(
           DataComponentInterpretation::component_is_scalar);
       }
-    const DoFHandler<2> &handler =
-      reduced_volumetric_integration ? dof_handler_out : dof_handler;
-    const Vector<double> &data =
-      reduced_volumetric_integration ? field : solution;
+    const DoFHandler<2> &handler
+      = reduced_volumetric_integration ? dof_handler_out : dof_handler;
+    const Vector<double> &data
+      = reduced_volumetric_integration ? field : solution;
     data_out.attach_dof_handler(handler);
     data_out.add_data_vector(data,
                              names,

@@ -95,9 +95,24 @@ namespace coaxfit
                     Vector<double>          &u_r,
                     Vector<double>          &force_out)
   {
-    const Vector<double> solution = solve_field(prescribed, displacement, force);
-    const auto          &dofs     = body.get_interface_dofs();
-    const double         normal   = body.geometry().contact_normal();
+    interface_values(prescribed,
+                     force,
+                     solve_field(prescribed, displacement, force),
+                     u_r,
+                     force_out);
+  }
+
+
+
+  void
+  BodySolver::interface_values(const std::vector<bool> &prescribed,
+                               const Vector<double>    &force,
+                               const Vector<double>    &solution,
+                               Vector<double>          &u_r,
+                               Vector<double>          &force_out) const
+  {
+    const auto  &dofs   = body.get_interface_dofs();
+    const double normal = body.geometry().contact_normal();
 
     // Reactions: the rows of K u - f (f = 0 at a prescribed point).
     Vector<double> residual(body.n_dofs());

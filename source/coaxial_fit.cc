@@ -34,9 +34,9 @@ namespace coaxfit
       std::error_code error;
       std::filesystem::create_directories(directory, error);
       if (error || !std::filesystem::is_directory(directory))
-        throw InputError("parameter Output/Directory = " + directory +
-                         ": cannot create the directory (" + error.message() +
-                         ")");
+        throw InputError("parameter Output/Directory = " + directory
+                         + ": cannot create the directory (" + error.message()
+                         + ")");
     }
   } // namespace
 
@@ -102,7 +102,7 @@ namespace coaxfit
       hub->setup_system();
       shaft->assemble_system();
       hub->assemble_system();
-      interface = std::make_unique<ContactInterface>(*shaft,
+      interface    = std::make_unique<ContactInterface>(*shaft,
                                                      *hub,
                                                      parameters.geometry.d);
       shaft_solver = std::make_unique<BodySolver>(*shaft);
@@ -178,7 +178,7 @@ namespace coaxfit
       coupling = make_staggered_coupling();
 
     TimerOutput::Scope scope(timer, "coupling");
-    const bool         converged = coupling->run(progress);
+    const bool         converged     = coupling->run(progress);
     std::tie(shaft_field, hub_field) = coupling->solve_fields();
     return converged;
   }
@@ -189,9 +189,9 @@ namespace coaxfit
   CoaxialFit::use_condensed_operator() const
   {
     const InterfaceOperatorType type = parameters.coupling.interface_operator;
-    return type == InterfaceOperatorType::condensed ||
-           (type == InterfaceOperatorType::automatic &&
-            interface->n_points() <= max_condensed_points);
+    return type == InterfaceOperatorType::condensed
+           || (type == InterfaceOperatorType::automatic
+               && interface->n_points() <= max_condensed_points);
   }
 
 
@@ -200,11 +200,11 @@ namespace coaxfit
   CoaxialFit::active_set_mode() const
   {
     const ActiveSetUpdateType mode = parameters.contact.active_set_update;
-    const bool                plain_fixed =
-      parameters.coupling.alpha_rule() == AlphaRuleType::fixed &&
-      parameters.coupling.accelerator() == AcceleratorType::none;
-    if (mode == ActiveSetUpdateType::every_step ||
-        (mode == ActiveSetUpdateType::automatic && plain_fixed))
+    const bool                plain_fixed
+      = parameters.coupling.alpha_rule() == AlphaRuleType::fixed
+        && parameters.coupling.accelerator() == AcceleratorType::none;
+    if (mode == ActiveSetUpdateType::every_step
+        || (mode == ActiveSetUpdateType::automatic && plain_fixed))
       return UnilateralActiveSet::Update::every_step;
     return UnilateralActiveSet::Update::when_converged;
   }
@@ -273,8 +273,7 @@ namespace coaxfit
                << " active set changes)\n"
                << std::scientific << std::setprecision(2)
                << "  complementarity: max tension "
-               << complementarity.max_tension_relative
-               << ", max penetration/d "
+               << complementarity.max_tension_relative << ", max penetration/d "
                << complementarity.max_penetration_relative << ", max |p gap| "
                << complementarity.max_pressure_gap_relative << std::fixed
                << std::setprecision(4) << '\n';
@@ -315,7 +314,7 @@ namespace coaxfit
                              complementarity,
                              timing,
                              warning_list};
-    std::vector<std::string> lines;
+    std::vector<std::string>      lines;
     {
       TimerOutput::Scope scope(timer, "output");
       for (const auto &writer : make_result_writers(parameters.output))

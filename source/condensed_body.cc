@@ -31,16 +31,16 @@ namespace coaxfit
 
     if (!P.empty())
       {
-        const LAPACKFullMatrix<double> &lu =
-          factorizations.get(prescribed, [&]() {
-            auto block =
-              std::make_unique<LAPACKFullMatrix<double>>(P.size(), P.size());
-            for (unsigned int a = 0; a < P.size(); ++a)
-              for (unsigned int b = 0; b < P.size(); ++b)
-                (*block)(a, b) = compliance[P[a]][P[b]];
-            block->compute_lu_factorization();
-            return block;
-          });
+        const LAPACKFullMatrix<double> &lu
+          = factorizations.get(prescribed, [&]() {
+              auto block = std::make_unique<LAPACKFullMatrix<double>>(P.size(),
+                                                                      P.size());
+              for (unsigned int a = 0; a < P.size(); ++a)
+                for (unsigned int b = 0; b < P.size(); ++b)
+                  (*block)(a, b) = compliance[P[a]][P[b]];
+              block->compute_lu_factorization();
+              return block;
+            });
         // C_PP F_P = u_P - C_PQ F_Q
         Vector<double> rhs(P.size());
         for (unsigned int a = 0; a < P.size(); ++a)

@@ -13,8 +13,8 @@ namespace coaxfit
     , z_coordinates(shaft.interface_z())
     , lumped_weights(shaft.interface_weights())
   {
-    const unsigned int n     = z_coordinates.size();
-    const double       scale = z_coordinates.empty() ? 1. : z_coordinates.back();
+    const unsigned int n = z_coordinates.size();
+    const double scale   = z_coordinates.empty() ? 1. : z_coordinates.back();
     if (n < 2 || hub.n_interface_points() != n)
       throw std::logic_error("the contact surfaces of shaft and hub do not "
                              "have matching points");
@@ -27,7 +27,8 @@ namespace coaxfit
 
 
   Vector<double>
-  ContactInterface::gap(const Vector<double> &u1, const Vector<double> &u2) const
+  ContactInterface::gap(const Vector<double> &u1,
+                        const Vector<double> &u2) const
   {
     Vector<double> g(u2);
     g -= u1;

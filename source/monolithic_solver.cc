@@ -156,14 +156,13 @@ namespace coaxfit
     for (unsigned int step = 1; step <= max_steps; ++step)
       {
         solve_tied();
-        last_displacement_mismatch =
-          interface.relative_gap_residual(u1, u2, active_set.in_contact());
+        last_displacement_mismatch
+          = interface.relative_gap_residual(u1, u2, active_set.in_contact());
         // Released points carry no force: the reaction there is zero.
         for (unsigned int i = 0; i < force.size(); ++i)
           if (!active_set.in_contact()[i])
             force[i] = 0.;
-        const bool changed =
-          active_set.update(force, interface.gap(u1, u2));
+        const bool changed = active_set.update(force, interface.gap(u1, u2));
         history_rows.push_back({step,
                                 true,
                                 0.,

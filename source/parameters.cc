@@ -39,11 +39,11 @@ namespace coaxfit
     const Names<AlphaRuleType> &
     names(AlphaRuleType)
     {
-      static const Names<AlphaRuleType> n{
-        {"auto", AlphaRuleType::automatic},
-        {"fixed", AlphaRuleType::fixed},
-        {"winkler", AlphaRuleType::winkler},
-        {"pointwise", AlphaRuleType::pointwise}};
+      static const Names<AlphaRuleType> n{{"auto", AlphaRuleType::automatic},
+                                          {"fixed", AlphaRuleType::fixed},
+                                          {"winkler", AlphaRuleType::winkler},
+                                          {"pointwise",
+                                           AlphaRuleType::pointwise}};
       return n;
     }
 
@@ -202,6 +202,35 @@ namespace coaxfit
           if (slash == std::string::npos)
             return parts;
           start = slash + 1;
+        }
+    }
+
+    /** Set @p path = @p value in @p prm as `--set` does. */
+    void
+    set_entry(ParameterHandler  &prm,
+              const std::string &path,
+              const std::string &value)
+    {
+      const std::vector<std::string> parts = split_path(path);
+      if (parts.size() < 2)
+        throw InputError("--set " + path + "=" + value
+                         + ": expected Section/Name=value");
+      try
+        {
+          for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+            prm.enter_subsection(parts[i]);
+          prm.set(parts.back(), value);
+          for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+            prm.leave_subsection();
+        }
+      catch (const InputError &)
+        {
+          throw;
+        }
+      catch (const std::exception &exc)
+        {
+          throw InputError("--set " + path + "=" + value + ": "
+                           + one_line(exc));
         }
     }
   } // namespace
@@ -580,7 +609,10 @@ namespace coaxfit
             "Coupling/IQN-ILS filter",
             iqn_filter,
             "0 <= filter < 1");
-    require(tolerance < 1., "Coupling/Tolerance", tolerance, "1e-14 <= tol < 1");
+    require(tolerance < 1.,
+            "Coupling/Tolerance",
+            tolerance,
+            "1e-14 <= tol < 1");
   }
 
 
@@ -731,6 +763,16 @@ namespace coaxfit
 
 
 
+  void
+  Parameters::set(const std::string &path, const std::string &value)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    set_entry(prm, path, value);
+  }
+
+
+
   std::string
   Parameters::output_directory() const
   {
@@ -775,29 +817,7 @@ namespace coaxfit
       }
 
     for (const auto &[path, value] : overrides)
-      {
-        const std::vector<std::string> parts = split_path(path);
-        if (parts.size() < 2)
-          throw InputError("--set " + path + "=" + value
-                           + ": expected Section/Name=value");
-        try
-          {
-            for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-              prm.enter_subsection(parts[i]);
-            prm.set(parts.back(), value);
-            for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-              prm.leave_subsection();
-          }
-        catch (const InputError &)
-          {
-            throw;
-          }
-        catch (const std::exception &exc)
-          {
-            throw InputError("--set " + path + "=" + value + ": "
-                             + one_line(exc));
-          }
-      }
+      set_entry(prm, path, value);
 
     // The scene has no silent defaults: name every entry that is missing.
     const std::set<std::string> missing = prm.get_entries_wrongly_not_set();
@@ -824,8 +844,10 @@ namespace coaxfit
 
     std::ostringstream prm_text, json_text;
     prm.print_parameters(prm_text, ParameterHandler::ShortPRM);
-    prm.print_parameters(json_text, ParameterHandler::ShortJSON);
-    parameters.used_prm  = "# coaxfit: the parameters of this run (file '"
+    prm.print_parameters(json_text,
+                         ParameterHandler::OutputStyle(
+                           ParameterHandler::JSON | ParameterHandler::Short));
+    parameters.used_prm = "# coaxfit: the parameters of this run (file '"
                           + filename + "' with the --set overrides)\n"
                           + prm_text.str();
     parameters.used_json = json_text.str();

@@ -35,8 +35,8 @@ namespace coaxfit
     , max_pressure_gap_relative(0.)
   {
     const Vector<double> p = interface.pressure(coupling.contact_force());
-    const Vector<double> gap =
-      interface.gap(coupling.u_shaft(), coupling.u_hub());
+    const Vector<double> gap
+      = interface.gap(coupling.u_shaft(), coupling.u_hub());
     const double d     = interface.interference();
     double       p_max = p.linfty_norm();
     if (p_max == 0.)
@@ -44,11 +44,11 @@ namespace coaxfit
     for (unsigned int i = 0; i < p.size(); ++i)
       {
         max_tension_relative = std::max(max_tension_relative, -p[i] / p_max);
-        max_penetration_relative =
-          std::max(max_penetration_relative, -gap[i] / d);
-        max_pressure_gap_relative =
-          std::max(max_pressure_gap_relative,
-                   std::abs(p[i] * gap[i]) / (p_max * d));
+        max_penetration_relative
+          = std::max(max_penetration_relative, -gap[i] / d);
+        max_pressure_gap_relative
+          = std::max(max_pressure_gap_relative,
+                     std::abs(p[i] * gap[i]) / (p_max * d));
       }
   }
 } // namespace coaxfit

@@ -238,8 +238,8 @@ namespace coaxfit
     Assert(L->is_super && L->is_ll, ExcInternalError());
     const std::vector<std::size_t> &p = impl->trailing_position;
     Assert(!p.empty(), ExcMessage("analyze() was given no unknowns"));
-    const types::blas_int n = p.size();
-    const std::size_t first = L->n - n;
+    const types::blas_int n     = p.size();
+    const std::size_t     first = L->n - n;
 
     // L_SS, column major, from the supernodes holding columns first..n-1:
     // supernode s has columns super[s]..super[s+1]-1, row indices
@@ -266,7 +266,7 @@ namespace coaxfit
                   = Lx[px[s] + (j - k1) * nsrow + r];
             }
       }
-    types::blas_int info = 0;
+    types::blas_int info  = 0;
     const char      lower = 'L';
     potri(&lower, &n, block.data(), &n, &info);
     if (info != 0)

@@ -10,12 +10,12 @@
 
 namespace coaxfit
 {
-  StaggeredCoupling::StaggeredCoupling(BodySolver               &shaft_solver,
-                                       BodySolver               &hub_solver,
-                                       InterfaceOperator        &shaft,
-                                       InterfaceOperator        &hub,
-                                       const ContactInterface   &interface,
-                                       const CouplingParameters &parameters,
+  StaggeredCoupling::StaggeredCoupling(BodySolver                &shaft_solver,
+                                       BodySolver                &hub_solver,
+                                       InterfaceOperator         &shaft,
+                                       InterfaceOperator         &hub,
+                                       const ContactInterface    &interface,
+                                       const CouplingParameters  &parameters,
                                        const UnilateralActiveSet &active_set,
                                        const double active_set_tolerance)
     : InterfaceSolver(active_set)
@@ -41,8 +41,8 @@ namespace coaxfit
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
     update_active_set();
-    last_displacement_mismatch =
-      interface.relative_gap_residual(u1, u2, active_set.in_contact());
+    last_displacement_mismatch
+      = interface.relative_gap_residual(u1, u2, active_set.in_contact());
 
     neumann_force = force;
     neumann_u1    = u1;
@@ -74,10 +74,10 @@ namespace coaxfit
     // (primal-dual) mode once the iteration has converged for the current
     // set to the active-set tolerance.
     active_set_verified = false;
-    if (active_set.update_mode() == UnilateralActiveSet::Update::every_step ||
-        (interface.relative_gap_residual(u1, u2, active_set.in_contact()) <
-           active_set_tolerance &&
-         last_traction_mismatch < active_set_tolerance))
+    if (active_set.update_mode() == UnilateralActiveSet::Update::every_step
+        || (interface.relative_gap_residual(u1, u2, active_set.in_contact())
+              < active_set_tolerance
+            && last_traction_mismatch < active_set_tolerance))
       {
         const bool changed  = active_set.update(force, interface.gap(u1, u2));
         active_set_verified = !changed;
@@ -86,8 +86,8 @@ namespace coaxfit
             accelerator->restart();
             // Each outer update starts a new inner iteration; in the
             // paper's every-step mode changes are part of the iteration.
-            if (active_set.update_mode() ==
-                UnilateralActiveSet::Update::when_converged)
+            if (active_set.update_mode()
+                == UnilateralActiveSet::Update::when_converged)
               last_change_step = history_rows.size() + 1;
           }
       }
@@ -115,13 +115,13 @@ namespace coaxfit
     for (unsigned int i = 0; i < n; ++i)
       force[i] = f1[i] + rule->alpha(i) * (f2[i] - f1[i]);
     // A tensile blend is a violated contact condition: part of the residual.
-    const bool clamping =
-      active_set.enabled() &&
-      active_set.update_mode() == UnilateralActiveSet::Update::every_step;
-    const double mismatch  = interface.max_pressure_difference(f1, f2);
-    const double tension   = clamping ? interface.max_tension(force) : 0.;
-    const double magnitude = std::max(interface.max_pressure(f1),
-                                      interface.max_pressure(f2));
+    const bool clamping
+      = active_set.enabled()
+        && active_set.update_mode() == UnilateralActiveSet::Update::every_step;
+    const double mismatch = interface.max_pressure_difference(f1, f2);
+    const double tension  = clamping ? interface.max_tension(force) : 0.;
+    const double magnitude
+      = std::max(interface.max_pressure(f1), interface.max_pressure(f2));
     last_traction_mismatch = std::max(mismatch, tension) / magnitude;
     if (!std::isfinite(last_traction_mismatch))
       last_traction_mismatch = std::numeric_limits<double>::quiet_NaN();
@@ -157,8 +157,8 @@ namespace coaxfit
         load += neumann_force[i] * neumann_force[i] / interface.weights()[i];
       }
     std::ostringstream msg;
-    if (!(load > 0.) || !(work1 > 0.) || !(work2 > 0.) ||
-        !std::isfinite(work1 + work2))
+    if (!(load > 0.) || !(work1 > 0.) || !(work2 > 0.)
+        || !std::isfinite(work1 + work2))
       {
         msg << "try a value of Coupling/Alpha closer to the paper's table";
         return msg.str();
@@ -202,10 +202,10 @@ namespace coaxfit
              ++it)
           if (it->neumann == neumann)
             same_kind.push_back(residual(*it));
-        if (same_kind.size() > window &&
-            std::is_sorted(same_kind.rbegin(),
-                           same_kind.rend(),
-                           [](double a, double b) { return a <= b; }))
+        if (same_kind.size() > window
+            && std::is_sorted(same_kind.rbegin(),
+                              same_kind.rend(),
+                              [](double a, double b) { return a <= b; }))
           {
             s << "the " << (neumann ? "displacement" : "traction")
               << " mismatch grew in each of the last " << window
@@ -223,8 +223,8 @@ namespace coaxfit
     for (const CouplingStep &step : history_rows)
       if (step.step > last_change_step)
         {
-          double &level = (step.step + stall_window > last.step) ? recent :
-                                                                   before;
+          double &level
+            = (step.step + stall_window > last.step) ? recent : before;
           level = std::min(level,
                            std::max(step.displacement_mismatch,
                                     step.traction_mismatch));
@@ -245,8 +245,8 @@ namespace coaxfit
     if (reason.empty())
       return;
     const CouplingStep &last = history_rows.back();
-    const double        current =
-      last.neumann ? last.displacement_mismatch : last.traction_mismatch;
+    const double        current
+      = last.neumann ? last.displacement_mismatch : last.traction_mismatch;
 
     // Growth or a stall far below the start is the round-off floor of an
     // ill-conditioned interface problem, not a bad alpha.
@@ -254,11 +254,11 @@ namespace coaxfit
     double best_traction     = std::numeric_limits<double>::infinity();
     for (const CouplingStep &s : history_rows)
       if (s.neumann)
-        best_displacement =
-          std::min(best_displacement, s.displacement_mismatch);
+        best_displacement
+          = std::min(best_displacement, s.displacement_mismatch);
       else
         best_traction = std::min(best_traction, s.traction_mismatch);
-    const double floor = std::max(best_displacement, best_traction);
+    const double       floor = std::max(best_displacement, best_traction);
     std::ostringstream msg;
     if (std::isfinite(current) && current < 1e-4)
       {
@@ -268,16 +268,15 @@ namespace coaxfit
             << " and |dp|/p = " << best_traction
             << ", the round-off level of this problem (thin walls give "
             << "cells of large aspect ratio and an ill-conditioned "
-            << "interface problem); set Coupling/Tolerance above "
-            << 2. * floor << " or use fewer Mesh/Radial cells.";
+            << "interface problem); set Coupling/Tolerance above " << 2. * floor
+            << " or use fewer Mesh/Radial cells.";
         throw SolverError(msg.str());
       }
     msg << "the coupling iteration failed at step " << last.step
         << " with Coupling/Alpha rule = " << rule->name()
         << " and Accelerator = " << accelerator->name()
-        << ", alpha = " << std::setprecision(4)
-        << rule->representative_alpha() << ": " << reason << "; "
-        << suggested_alpha_range()
+        << ", alpha = " << std::setprecision(4) << rule->representative_alpha()
+        << ": " << reason << "; " << suggested_alpha_range()
         << " (a Winkler estimate; thin walls can leave no convergent "
         << "constant alpha: then use Coupling/Alpha controller = iqn-ils).";
     throw SolverError(msg.str());
@@ -330,8 +329,8 @@ namespace coaxfit
           dirichlet_step();
         if (progress)
           print_step(*progress);
-        if (last_displacement_mismatch < tolerance &&
-            last_traction_mismatch < tolerance && active_set_verified)
+        if (last_displacement_mismatch < tolerance
+            && last_traction_mismatch < tolerance && active_set_verified)
           {
             has_converged = true;
             break;
@@ -372,8 +371,8 @@ namespace coaxfit
         s.factorizations["shaft_interface"] = shaft.n_factorizations();
         s.factorizations["hub_interface"]   = hub.n_factorizations();
       }
-    s.solves = {{"shaft", shaft_solver.n_solves()},
-                {"hub", hub_solver.n_solves()}};
+    s.solves
+      = {{"shaft", shaft_solver.n_solves()}, {"hub", hub_solver.n_solves()}};
     return s;
   }
 } // namespace coaxfit

@@ -8,11 +8,11 @@ namespace coaxfit
   ContactPressureWriter::write(const RunResults  &results,
                                const std::string &directory) const
   {
-    const std::string    name = "contact_pressure.csv";
-    std::ofstream        out  = open_result_file(directory + "/" + name);
+    const std::string      name   = "contact_pressure.csv";
+    std::ofstream          out    = open_result_file(directory + "/" + name);
     const InterfaceSolver &solver = results.solver;
-    const Vector<double>   gap =
-      results.interface.gap(solver.u_shaft(), solver.u_hub());
+    const Vector<double>   gap
+      = results.interface.gap(solver.u_shaft(), solver.u_hub());
     out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n";
     for (unsigned int i = 0; i < results.interface.n_points(); ++i)
       out << results.interface.z()[i] << ',' << results.pressure.pressure[i]
@@ -21,7 +21,7 @@ namespace coaxfit
           << (solver.get_active_set().in_contact()[i] ? ",contact\n" :
                                                         ",separated\n");
     close_result_file(out, directory + "/" + name);
-    return name + ": pressure and gap at " +
-           std::to_string(results.interface.n_points()) + " points";
+    return name + ": pressure and gap at "
+           + std::to_string(results.interface.n_points()) + " points";
   }
 } // namespace coaxfit

@@ -17,7 +17,7 @@ namespace coaxfit
           << s.alpha << ',' << s.displacement_mismatch << ','
           << s.traction_mismatch << '\n';
     close_result_file(out, directory + "/" + name);
-    return name + ": " + std::to_string(results.solver.history().size()) +
-           " steps";
+    return name + ": " + std::to_string(results.solver.history().size())
+           + " steps";
   }
 } // namespace coaxfit

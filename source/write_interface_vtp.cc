@@ -14,7 +14,7 @@ namespace coaxfit
     const InterfaceSolver  &solver    = results.solver;
     const unsigned int      n         = interface.n_points();
     const Vector<double> gap = interface.gap(solver.u_shaft(), solver.u_hub());
-    const auto array = [&](const std::string &array_name, auto value) {
+    const auto array         = [&](const std::string &array_name, auto value) {
       out << "<DataArray type=\"Float64\" Name=\"" << array_name
           << "\" format=\"ascii\">\n";
       for (unsigned int i = 0; i < n; ++i)

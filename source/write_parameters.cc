@@ -18,7 +18,7 @@ namespace coaxfit
         close_result_file(out, directory + "/" + name);
       }
     return "parameters.prm, parameters.json: the parameters of this run "
-           "(repeat it with coaxfit " +
-           directory + "/parameters.prm)";
+           "(repeat it with coaxfit "
+           + directory + "/parameters.prm)";
   }
 } // namespace coaxfit

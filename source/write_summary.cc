@@ -1,8 +1,7 @@
 #include <coaxfit/result_writers.h>
 
-#include <nlohmann/json.hpp>
-
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 namespace coaxfit
 {
@@ -26,14 +25,15 @@ namespace coaxfit
                        {"units", "mm, L1 and L2 are half lengths"}};
       j["material"] = {{"shaft", {{"E", p.shaft.E}, {"nu", p.shaft.nu}}},
                        {"hub", {{"E", p.hub.E}, {"nu", p.hub.nu}}}};
-      j["mesh"]     = {
-        {"degree", p.mesh.degree},
-        {"global_refinements", p.mesh.global_refinements},
-        {"cells",
-         {{"shaft", results.shaft.n_cells()}, {"hub", results.hub.n_cells()}}},
-        {"dofs",
-         {{"shaft", results.shaft.n_dofs()}, {"hub", results.hub.n_dofs()}}},
-        {"interface_points", results.interface.n_points()}};
+      j["mesh"]
+        = {{"degree", p.mesh.degree},
+           {"global_refinements", p.mesh.global_refinements},
+           {"cells",
+            {{"shaft", results.shaft.n_cells()},
+             {"hub", results.hub.n_cells()}}},
+           {"dofs",
+            {{"shaft", results.shaft.n_dofs()}, {"hub", results.hub.n_dofs()}}},
+           {"interface_points", results.interface.n_points()}};
       return j;
     }
 
@@ -41,11 +41,10 @@ namespace coaxfit
     contact(const RunResults &results)
     {
       const UnilateralActiveSet &set = results.solver.get_active_set();
-      const double               length =
-        results.parameters.geometry.contact_length();
-      const auto zones = set.separated_zones(results.interface.z(), length);
-      double     separated = 0.;
-      Json       zone_list = Json::array();
+      const double length = results.parameters.geometry.contact_length();
+      const auto   zones  = set.separated_zones(results.interface.z(), length);
+      double       separated = 0.;
+      Json         zone_list = Json::array();
       for (const auto &zone : zones)
         {
           separated += zone.second - zone.first;
@@ -72,19 +71,19 @@ namespace coaxfit
       for (const CouplingStep &s : solver.history())
         alpha.push_back(s.alpha);
       Json j;
-      j["coupling"]  = {{"controller",
-                        statistics.method == "monolithic" ?
-                           std::string("monolithic") :
-                           to_string(c.controller)},
-                       {"alpha_rule", statistics.alpha_rule},
-                       {"accelerator", statistics.accelerator},
-                       {"tolerance", c.tolerance},
-                       {"max_steps", c.max_steps},
-                       {"alpha_history", alpha}};
-      j["residuals"] = {{"displacement_relative",
-                         solver.displacement_residual()},
-                        {"traction_relative", solver.traction_residual()}};
-      j["solver"]    = {{"method", statistics.method},
+      j["coupling"]
+        = {{"controller",
+            statistics.method == "monolithic" ? std::string("monolithic") :
+                                                to_string(c.controller)},
+           {"alpha_rule", statistics.alpha_rule},
+           {"accelerator", statistics.accelerator},
+           {"tolerance", c.tolerance},
+           {"max_steps", c.max_steps},
+           {"alpha_history", alpha}};
+      j["residuals"]
+        = {{"displacement_relative", solver.displacement_residual()},
+           {"traction_relative", solver.traction_residual()}};
+      j["solver"] = {{"method", statistics.method},
                      {"factorizations", statistics.factorizations},
                      {"solves", statistics.solves}};
       return j;
@@ -99,14 +98,14 @@ namespace coaxfit
   {
     const PressureSummary &ps = results.pressure;
     Json                   j;
-    j["case"]                          = results.parameters.case_name;
-    j["converged"]                     = results.solver.converged();
-    j["iterations"]                    = results.solver.n_steps();
-    j["iterations_to_paper_criterion"] =
-      results.solver.steps_to_displacement_mismatch(1e-2);
+    j["case"]       = results.parameters.case_name;
+    j["converged"]  = results.solver.converged();
+    j["iterations"] = results.solver.n_steps();
+    j["iterations_to_paper_criterion"]
+      = results.solver.steps_to_displacement_mismatch(1e-2);
     j.update(geometry_and_mesh(results));
     j.update(coupling_and_solver(results));
-    j["pressure"]        = {{"units", "MPa, compression positive"},
+    j["pressure"] = {{"units", "MPa, compression positive"},
                      {"at_mid_plane", ps.at_mid_plane},
                      {"mean", ps.mean},
                      {"min", ps.min},
@@ -115,15 +114,15 @@ namespace coaxfit
                      {"z_of_max", ps.z_of_max},
                      {"lame", ps.lame},
                      {"tensile", ps.min < 0.}};
-    j["contact"]         = contact(results);
-    j["active_set"]      = {{"changes",
-                        results.solver.get_active_set().n_changes()}};
-    j["complementarity"] = {
-      {"max_tension_relative", results.complementarity.max_tension_relative},
-      {"max_penetration_relative",
-       results.complementarity.max_penetration_relative},
-      {"max_pressure_gap_relative",
-       results.complementarity.max_pressure_gap_relative}};
+    j["contact"]  = contact(results);
+    j["active_set"]
+      = {{"changes", results.solver.get_active_set().n_changes()}};
+    j["complementarity"]
+      = {{"max_tension_relative", results.complementarity.max_tension_relative},
+         {"max_penetration_relative",
+          results.complementarity.max_penetration_relative},
+         {"max_pressure_gap_relative",
+          results.complementarity.max_pressure_gap_relative}};
     j["warnings"] = results.warnings;
     Json timing(results.timing);
     timing["units"] = "s";

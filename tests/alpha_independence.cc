@@ -11,12 +11,12 @@
 int
 main()
 {
-  std::vector<std::vector<double>> pressures;
+  std::vector<dealii::Vector<double>> pressures;
   for (const double alpha : {0.7, 0.9})
     {
       coaxfit::Parameters p; // variant 5 on the paper's coarse mesh
-      p.alpha            = alpha;
-      p.alpha_controller = "fixed"; // the paper's process
+      p.coupling.alpha = alpha;
+      p.set("Coupling/Alpha controller", "fixed"); // the paper's process
       coaxfit::CoaxialFit fit(p);
       fit.setup_system();
       const bool converged = fit.solve(nullptr);

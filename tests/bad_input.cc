@@ -22,6 +22,16 @@ namespace
                             "  set L1 = 200\n"
                             "  set L2 = 100\n"
                             "  set d = 0.25\n"
+                            "end\n"
+                            "subsection Material\n"
+                            "  subsection Shaft\n"
+                            "    set E = 2e5\n"
+                            "    set nu = 0.33\n"
+                            "  end\n"
+                            "  subsection Hub\n"
+                            "    set E = 2e5\n"
+                            "    set nu = 0.33\n"
+                            "  end\n"
                             "end\n";
 
   /** Run coaxfit with @p arguments; print its stderr line and exit code. */
@@ -91,6 +101,10 @@ main()
       "--set Mesh/Degree=7 " + file_with("set_out_of_range", ""));
   run("unknown_option", "--fast " + file_with("unknown_option", ""));
   run("missing_file", "no_such_file.prm");
+  // The scene has no silent defaults: every missing entry is named.
+  std::ofstream("scene_incomplete.prm")
+    << "subsection Geometry\n  set R1 = 20\n  set R2 = 40\nend\n";
+  run("scene_incomplete", "scene_incomplete.prm");
   std::filesystem::create_directories("a_directory.prm");
   run("unreadable_file", "a_directory.prm");
   run("d_infinite", geometry("d_infinite", "d = inf"));

@@ -14,7 +14,7 @@
 namespace
 {
   void
-  check(const std::string &label, coaxfit::Body &body)
+  check(const std::string &label, coaxfit_test::Body &body)
   {
     body.setup_system();
     body.assemble_system();

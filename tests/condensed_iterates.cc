@@ -20,10 +20,10 @@ namespace
   compare(const std::string &label, coaxfit::Parameters p)
   {
     std::vector<std::vector<coaxfit::CouplingStep>> histories;
-    std::vector<std::vector<double>>                pressures;
+    std::vector<dealii::Vector<double>>             pressures;
     for (const std::string op : {"full", "condensed"})
       {
-        p.interface_operator = op;
+        p.set("Coupling/Interface operator", op);
         coaxfit::CoaxialFit fit(p);
         fit.setup_system();
         fit.solve(nullptr);
@@ -57,7 +57,7 @@ int
 main()
 {
   coaxfit::Parameters v5;
-  v5.alpha_controller = "fixed";
+  v5.set("Coupling/Alpha controller", "fixed");
   compare("variant 5, fixed alpha 0.8", v5);
 
   compare("variant 17, iqn-ils, unilateral", coaxfit_test::variant_17());

@@ -21,22 +21,22 @@ namespace
   compare_controllers(const std::string &label, const coaxfit::Parameters &base)
   {
     std::cout << label << std::endl;
-    std::vector<double> reference;
+    dealii::Vector<double> reference;
     for (const std::string name :
          {"iqn-ils", "aitken", "winkler", "pointwise", "fixed"})
       {
         coaxfit::Parameters p = base;
-        p.alpha_controller    = name;
-        p.max_steps           = 600;
+        p.set("Coupling/Alpha controller", name);
+        p.coupling.max_steps = 600;
         coaxfit::CoaxialFit fit(p);
         fit.setup_system();
         std::cout << "  " << std::setw(10) << name << ": ";
         try
           {
-            const bool                converged = fit.solve(nullptr);
-            const std::vector<double> pressure
+            const bool                   converged = fit.solve(nullptr);
+            const dealii::Vector<double> pressure
               = fit.pressure_summary().pressure;
-            if (reference.empty())
+            if (reference.size() == 0)
               reference = pressure;
             double difference = 0., magnitude = 0.;
             for (unsigned int i = 0; i < pressure.size(); ++i)
@@ -69,8 +69,8 @@ main()
                       coaxfit_test::tube_variant(0.93, 0.13));
 
   coaxfit::Parameters lame;
-  lame.L1 = lame.L2 = 100.;
-  lame.alpha        = 0.5;
+  lame.geometry.L1 = lame.geometry.L2 = 100.;
+  lame.coupling.alpha                 = 0.5;
   coaxfit::CoaxialFit fit(lame); // iqn-ils is the default
   fit.setup_system();
   fit.solve(nullptr);

@@ -16,12 +16,12 @@ namespace coaxfit_test
   tube_variant(const double beta1, const double alpha)
   {
     coaxfit::Parameters p;
-    p.R0    = 100. * beta1;
-    p.R2    = 200.;
-    p.L1    = 300.;
-    p.L2    = 200.;
-    p.d     = 0.5;
-    p.alpha = alpha;
+    p.geometry.R0    = 100. * beta1;
+    p.geometry.R2    = 200.;
+    p.geometry.L1    = 300.;
+    p.geometry.L2    = 200.;
+    p.geometry.d     = 0.5;
+    p.coupling.alpha = alpha;
     return p;
   }
 
@@ -33,9 +33,9 @@ namespace coaxfit_test
   }
 
   /** max_i |a_i - b_i| / max_i |b_i|. */
+  template <typename VectorType>
   inline double
-  relative_difference(const std::vector<double> &a,
-                      const std::vector<double> &b)
+  relative_difference(const VectorType &a, const VectorType &b)
   {
     double difference = 0., magnitude = 0.;
     for (unsigned int i = 0; i < a.size(); ++i)

@@ -14,7 +14,7 @@ namespace
   void
   check(const std::string &label, coaxfit::Parameters p)
   {
-    p.L1 = p.L2 = 100.;
+    p.geometry.L1 = p.geometry.L2 = 100.;
     coaxfit::CoaxialFit fit(p);
     fit.setup_system();
     const bool                     converged = fit.solve(nullptr);
@@ -46,11 +46,11 @@ main()
   two.shaft.nu            = 0.30;
   two.hub.E               = 7.0e4; // aluminium hub
   two.hub.nu              = 0.33;
-  two.alpha               = 0.85;
+  two.coupling.alpha      = 0.85;
   check("solid steel shaft (E 2.1e5, nu 0.30), aluminium hub (7e4, 0.33)", two);
 
   coaxfit::Parameters tube = two;
-  tube.R0                  = 60.; // hollow shaft: the R0 terms of the formula
-  tube.alpha               = 0.6;
+  tube.geometry.R0         = 60.; // hollow shaft: the R0 terms of the formula
+  tube.coupling.alpha      = 0.6;
   check("steel tube R0 = 60 mm, aluminium hub", tube);
 }

@@ -30,7 +30,7 @@ main()
           body.assemble_system();
           std::vector<double> u_r;
           body.solve_neumann(uniform_pressure_forces(body, p), u_r);
-          const LameErrors e           = lame_errors(body, exact);
+          const LameErrors e           = body.errors(exact);
           double           max_surface = 0.;
           for (const double u : u_r)
             max_surface

@@ -29,7 +29,7 @@ main()
             body.assemble_system();
             std::vector<double> u_r;
             body.solve_neumann(uniform_pressure_forces(body, p), u_r);
-            const LameErrors e = lame_errors(body, exact);
+            const LameErrors e = body.errors(exact);
             worst_u            = std::max(worst_u, e.displacement_L2);
             worst_s = std::max({worst_s, e.hoop_stress_L2, e.radial_stress_L2});
           }

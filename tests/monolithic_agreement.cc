@@ -16,12 +16,12 @@ namespace
   void
   compare(const std::string &label, coaxfit::Parameters p)
   {
-    p.tolerance = 1e-9;
-    std::vector<std::vector<double>> pressure;
-    std::vector<std::vector<bool>>   contact;
+    p.coupling.tolerance = 1e-9;
+    std::vector<dealii::Vector<double>> pressure;
+    std::vector<std::vector<bool>>      contact;
     for (const std::string method : {"staggered", "monolithic"})
       {
-        p.solver_method = method;
+        p.set("Solver/Method", method);
         coaxfit::CoaxialFit fit(p);
         fit.setup_system();
         const bool converged = fit.solve(nullptr);

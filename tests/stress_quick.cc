@@ -27,7 +27,7 @@ namespace
   Outcome
   solve(coaxfit::Parameters p)
   {
-    p.max_steps = 1000;
+    p.coupling.max_steps = 1000;
     p.validate();
     coaxfit::CoaxialFit fit(p);
     fit.setup_system();
@@ -53,7 +53,7 @@ namespace
   lame_case()
   {
     coaxfit::Parameters p;
-    p.L1 = p.L2 = 100.;
+    p.geometry.L1 = p.geometry.L2 = 100.;
     return p;
   }
 
@@ -80,12 +80,12 @@ main()
 {
   {
     coaxfit::Parameters p = lame_case();
-    p.R0                  = 99.9; // beta1 = 0.999
-    p.d                   = 0.05; // delta = 5e-4
-    p.tolerance           = 1e-5; // round-off floor of this mesh: about 2e-6
+    p.geometry.R0         = 99.9; // beta1 = 0.999
+    p.geometry.d          = 0.05; // delta = 5e-4
+    p.coupling.tolerance  = 1e-5; // round-off floor of this mesh: about 2e-6
     report("thin tube beta1 = 0.999 (tolerance 1e-5)", solve(p), 1e-3);
-    p    = lame_case();
-    p.R2 = 102.; // beta2 = 1.02
+    p             = lame_case();
+    p.geometry.R2 = 102.; // beta2 = 1.02
     report("thin hub beta2 = 1.02", solve(p), 1e-3);
   }
 
@@ -94,7 +94,7 @@ main()
       {
         coaxfit::Parameters p = lame_case();
         p.shaft.nu = p.hub.nu = nu;
-        p.degree              = degree;
+        p.mesh.degree         = degree;
         std::ostringstream label;
         label << "nu = " << nu << ", FE_Q(" << degree << ")";
         // Pure displacement elements lock as nu -> 1/2: Q1 from 0.499 on,
@@ -109,9 +109,9 @@ main()
   for (const unsigned int degree : {1u, 2u})
     {
       coaxfit::Parameters p = lame_case();
-      p.shaft.nu = p.hub.nu            = 0.4999;
-      p.degree                         = degree;
-      p.reduced_volumetric_integration = true;
+      p.shaft.nu = p.hub.nu         = 0.4999;
+      p.mesh.degree                 = degree;
+      p.mesh.volumetric_integration = coaxfit::VolumetricIntegration::reduced;
       std::ostringstream label;
       label << "nu = 0.4999, FE_Q(" << degree << "), reduced volumetric";
       report(label.str(), solve(p), degree == 1 ? 1e-2 : 1e-3);
@@ -127,9 +127,9 @@ main()
     }
 
   {
-    coaxfit::Parameters p = lame_case();
-    p.grading_ratio       = 2.;
-    p.global_refinements  = 2;
+    coaxfit::Parameters p     = lame_case();
+    p.mesh.grading_ratio      = 2.;
+    p.mesh.global_refinements = 2;
     report("grading ratio 2, 2 refinements", solve(p), 1e-3);
   }
 
@@ -138,8 +138,8 @@ main()
   for (const double delta : {1e-7, 1e-5, 1e-3, 2.5e-3, 1e-2})
     {
       coaxfit::Parameters p;
-      p.d                 = delta * p.R1;
-      const double scaled = solve(p).mid_plane / p.d;
+      p.geometry.d        = delta * p.geometry.R1;
+      const double scaled = solve(p).mid_plane / p.geometry.d;
       if (reference == 0.)
         reference = scaled;
       worst = std::max(worst, std::abs(scaled / reference - 1.));

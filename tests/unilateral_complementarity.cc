@@ -20,7 +20,7 @@ main()
 {
   {
     coaxfit::Parameters p = variant_17();
-    p.unilateral          = false;
+    p.contact.unilateral  = false;
     coaxfit::CoaxialFit fit(p);
     fit.setup_system();
     fit.solve(nullptr);
@@ -38,8 +38,8 @@ main()
                                                    {"aitken", 0.017}})
     {
       coaxfit::Parameters p = variant_17();
-      p.alpha_controller    = controller;
-      p.alpha               = alpha;
+      p.set("Coupling/Alpha controller", controller);
+      p.coupling.alpha = alpha;
       coaxfit::CoaxialFit fit(p);
       fit.setup_system();
       const bool                      converged = fit.solve(nullptr);
@@ -47,7 +47,7 @@ main()
       const coaxfit::Complementarity  comp(fit.get_interface(), c);
       const auto                      zones
         = c.get_active_set().separated_zones(fit.get_interface().z(),
-                                             p.contact_length());
+                                             p.geometry.contact_length());
       all_zones.push_back(zones);
 
       std::cout << std::defaultfloat << std::setprecision(4) << controller

@@ -9,11 +9,11 @@
 int
 main()
 {
-  std::vector<std::vector<double>> pressures;
+  std::vector<dealii::Vector<double>> pressures;
   for (const bool unilateral : {false, true})
     {
       coaxfit::Parameters p; // variant 5
-      p.unilateral = unilateral;
+      p.contact.unilateral = unilateral;
       coaxfit::CoaxialFit fit(p);
       fit.setup_system();
       const bool  converged = fit.solve(nullptr);

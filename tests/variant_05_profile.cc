@@ -13,7 +13,7 @@ int
 main()
 {
   coaxfit::Parameters p; // variant 5
-  p.global_refinements = 1;
+  p.mesh.global_refinements = 1;
   coaxfit::CoaxialFit fit(p);
   fit.setup_system();
   fit.solve(nullptr);

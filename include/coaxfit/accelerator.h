@@ -36,11 +36,13 @@ namespace coaxfit
      * the next iterate.
      */
     virtual void
-    accelerate(const Vector<double> &x, Vector<double> &g) = 0;
+    accelerate(const Vector<double> &x, Vector<double> &g)
+      = 0;
 
     /** Forget the history (the map changed). */
     virtual void
-    restart() = 0;
+    restart()
+      = 0;
   };
 
   /** The plain iteration x_{k+1} = G(x_k). */

@@ -41,7 +41,8 @@ namespace coaxfit
 
     /** Re-choose alpha from the state of a Neumann step. */
     virtual void
-    update(const NeumannState &state) = 0;
+    update(const NeumannState &state)
+      = 0;
 
     /** Whether alpha has been estimated from data (not the initial one). */
     virtual bool

@@ -110,8 +110,8 @@ namespace coaxfit
 
     /** The report of the final state, printed always. */
     void
-    print_report(const PressureSummary    &pressure,
-                 const Complementarity    &complementarity,
+    print_report(const PressureSummary          &pressure,
+                 const Complementarity          &complementarity,
                  const std::vector<std::string> &warnings) const;
 
     const Parameters                    parameters;

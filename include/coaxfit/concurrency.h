@@ -17,7 +17,7 @@ namespace coaxfit
   void
   concurrently(const F1 &job1, const F2 &job2)
   {
-    std::exception_ptr        error;
+    std::exception_ptr          error;
     dealii::Threads::Task<void> task = dealii::Threads::new_task([&]() {
       try
         {

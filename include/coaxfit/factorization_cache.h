@@ -30,8 +30,7 @@ namespace coaxfit
 
     /** The factorization for @p key, made by @p make if not cached. */
     const Factor &
-    get(const Key                                       &key,
-        const std::function<std::unique_ptr<Factor>()> &make)
+    get(const Key &key, const std::function<std::unique_ptr<Factor>()> &make)
     {
       const auto found = factors.find(key);
       if (found != factors.end())

@@ -36,7 +36,8 @@ namespace coaxfit
           const Vector<double>    &displacement,
           const Vector<double>    &force,
           Vector<double>          &u_r,
-          Vector<double>          &force_out) = 0;
+          Vector<double>          &force_out)
+      = 0;
 
     /** Number of factorizations made so far. */
     virtual unsigned int

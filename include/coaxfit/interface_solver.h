@@ -71,7 +71,8 @@ namespace coaxfit
      * whether it converged.
      */
     virtual bool
-    run(std::ostream *progress) = 0;
+    run(std::ostream *progress)
+      = 0;
 
     /**
      * The displacement fields of shaft and hub for the final state on S

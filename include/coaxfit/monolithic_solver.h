@@ -65,11 +65,11 @@ namespace coaxfit
     const BodyDiscretization &shaft;
     const BodyDiscretization &hub;
     Vector<double>            shaft_field, hub_field;
-    const ContactInterface &interface;
-    const unsigned int      max_steps;
-    unsigned int            factorizations = 0;
-    SparsityPattern         pattern;
-    SparseCholesky          cholesky;
+    const ContactInterface   &interface;
+    const unsigned int        max_steps;
+    unsigned int              factorizations = 0;
+    SparsityPattern           pattern;
+    SparseCholesky            cholesky;
   };
 } // namespace coaxfit
 

@@ -175,9 +175,9 @@ namespace coaxfit
   /** Subsection `Coupling`: the staggered process. */
   struct CouplingParameters
   {
-    double                alpha      = 0.8;
-    AlphaControllerPreset controller = AlphaControllerPreset::iqn_ils;
-    AlphaRuleType         rule       = AlphaRuleType::automatic;
+    double                alpha              = 0.8;
+    AlphaControllerPreset controller         = AlphaControllerPreset::iqn_ils;
+    AlphaRuleType         rule               = AlphaRuleType::automatic;
     AcceleratorType       acceleration       = AcceleratorType::automatic;
     double                tolerance          = 1e-8;
     unsigned int          max_steps          = 200;
@@ -282,6 +282,14 @@ namespace coaxfit
      */
     void
     validate() const;
+
+    /**
+     * Set the entry @p path (`Section/Name`) to @p value, as `--set` does:
+     * checked against the entry's pattern, InputError if it does not match.
+     * Does not validate() the whole.
+     */
+    void
+    set(const std::string &path, const std::string &value);
 
     /** The output directory: Output/Directory or output/<case name>. */
     std::string

@@ -52,7 +52,7 @@ namespace coaxfit
   {
   public:
     std::string
-    write(const RunResults &results,
+    write(const RunResults  &results,
           const std::string &directory) const override;
   };
 
@@ -61,7 +61,7 @@ namespace coaxfit
   {
   public:
     std::string
-    write(const RunResults &results,
+    write(const RunResults  &results,
           const std::string &directory) const override;
   };
 
@@ -74,7 +74,7 @@ namespace coaxfit
   {
   public:
     std::string
-    write(const RunResults &results,
+    write(const RunResults  &results,
           const std::string &directory) const override;
   };
 
@@ -86,7 +86,7 @@ namespace coaxfit
     explicit BodyVtuWriter(bool shaft);
 
     std::string
-    write(const RunResults &results,
+    write(const RunResults  &results,
           const std::string &directory) const override;
 
   private:
@@ -101,7 +101,7 @@ namespace coaxfit
   {
   public:
     std::string
-    write(const RunResults &results,
+    write(const RunResults  &results,
           const std::string &directory) const override;
   };
 
@@ -110,7 +110,7 @@ namespace coaxfit
   {
   public:
     std::string
-    write(const RunResults &results,
+    write(const RunResults  &results,
           const std::string &directory) const override;
   };
 
@@ -123,7 +123,7 @@ namespace coaxfit
   {
   public:
     std::string
-    write(const RunResults &results,
+    write(const RunResults  &results,
           const std::string &directory) const override;
   };
 

@@ -95,15 +95,10 @@ namespace coaxfit
   {
     const QGauss<2> quadrature(fe.degree + 1);
     const QGauss<2> reduced_quadrature(fe.degree);
-    const QGauss<1> face_quadrature(fe.degree + 1);
     const auto      flags = update_values | update_gradients
                        | update_quadrature_points | update_JxW_values;
     FEValues<2>        fe_values(fe, quadrature, flags);
     FEValues<2>        reduced_values(fe, reduced_quadrature, flags);
-    FEFaceValues<2>    fe_face_values(fe,
-                                   face_quadrature,
-                                   update_values | update_quadrature_points
-                                     | update_JxW_values);
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
@@ -113,10 +108,6 @@ namespace coaxfit
     const Material full_rule_material = reduced_volumetric_integration ?
                                           body_material.without_lambda() :
                                           body_material;
-
-    std::map<types::global_dof_index, unsigned int> interface_index;
-    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
-      interface_index[interface_dofs[i]] = i;
 
     // The strain of every shape function at quadrature point q.
     const auto shape_strains
@@ -135,7 +126,6 @@ namespace coaxfit
         };
 
     stiffness_matrix = 0;
-    weights          = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
@@ -172,26 +162,46 @@ namespace coaxfit
         constraints.distribute_local_to_global(cell_matrix,
                                                local_dof_indices,
                                                stiffness_matrix);
-
-        // Interface weights w_i = int_S N_i r dz.
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->boundary_id() == BoundaryId::contact)
-            {
-              fe_face_values.reinit(cell, face);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const auto point = interface_index.find(local_dof_indices[i]);
-                  if (point == interface_index.end())
-                    continue;
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    weights[point->second]
-                      += fe_face_values.shape_value(i, q)
-                         * fe_face_values.quadrature_point(q)[0]
-                         * fe_face_values.JxW(q);
-                }
-            }
       }
+    assemble_interface_weights();
+  }
+
+
+
+  void
+  BodyDiscretization::assemble_interface_weights()
+  {
+    const QGauss<1>                      face_quadrature(fe.degree + 1);
+    FEFaceValues<2>                      fe_face_values(fe,
+                                   face_quadrature,
+                                   update_values | update_quadrature_points
+                                     | update_JxW_values);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
+    std::map<types::global_dof_index, unsigned int> interface_index;
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      interface_index[interface_dofs[i]] = i;
+
+    weights = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == BoundaryId::contact)
+          {
+            cell->get_dof_indices(local_dof_indices);
+            fe_face_values.reinit(cell, face);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const auto point = interface_index.find(local_dof_indices[i]);
+                if (point == interface_index.end())
+                  continue;
+                for (const unsigned int q :
+                     fe_face_values.quadrature_point_indices())
+                  weights[point->second]
+                    += fe_face_values.shape_value(i, q)
+                       * fe_face_values.quadrature_point(q)[0]
+                       * fe_face_values.JxW(q);
+              }
+          }
   }
 
 

@@ -519,6 +519,15 @@ namespace coaxfit
                   "quasi-Newton). auto: the accelerator of the Alpha "
                   "controller preset (none for fixed, winkler and "
                   "pointwise).");
+    declare_iteration_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  CouplingParameters::declare_iteration_parameters(ParameterHandler &prm)
+  {
     add_selection(prm,
                   "Interface operator",
                   interface_operator,
@@ -592,7 +601,6 @@ namespace coaxfit
                       "that reaches it without converging exits with a "
                       "non-zero code. Allowed: 1 to 100000.",
                       Patterns::Integer(1, 100000));
-    prm.leave_subsection();
   }
 
 

@@ -8,7 +8,7 @@ namespace coaxfit
    * kernels call, if that library can be told (OpenBLAS and its
    * openblas_set_num_threads, found at run time). The staggered solver
    * already runs the two bodies on two threads; a threaded BLAS under each
-   * would oversubscribe the cores (measured: 1.7x slower on two cores), so
+   * would oversubscribe the cores (benchmarks/README.md has the figures), so
    * it asks for one BLAS thread, while the monolithic solver, which has one
    * system, lets the BLAS use every core.
    *

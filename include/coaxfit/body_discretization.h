@@ -148,6 +148,10 @@ namespace coaxfit
     void
     collect_interface_points();
 
+    /** The weights w_i = int_S N_i r dz of the interface points. */
+    void
+    assemble_interface_weights();
+
     /**
      * With reduced integration: a DoFHandler for the displacement plus the
      * volumetric stress at the reduced points (FE_DGQArbitraryNodes on the

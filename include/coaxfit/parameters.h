@@ -190,6 +190,14 @@ namespace coaxfit
     void
     declare_parameters(ParameterHandler &prm);
 
+    /**
+     * The entries of the iteration itself (interface operator, Beta,
+     * accelerator settings, tolerance, step limit), in the current
+     * subsection.
+     */
+    void
+    declare_iteration_parameters(ParameterHandler &prm);
+
     /** Strict bounds that a pattern cannot state. */
     void
     validate() const;

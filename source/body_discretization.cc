@@ -207,6 +207,30 @@ namespace coaxfit
 
 
   void
+  BodyDiscretization::interface_values(const std::vector<bool> &prescribed,
+                                       const Vector<double>    &force,
+                                       const Vector<double>    &solution,
+                                       Vector<double>          &u_r,
+                                       Vector<double>          &force_out) const
+  {
+    const auto  &dofs   = interface_dofs;
+    const double normal = body_geometry.contact_normal();
+
+    // Reactions: the rows of K u - f (f = 0 at a prescribed point).
+    Vector<double> residual(n_dofs());
+    stiffness_matrix.residual(residual, solution, Vector<double>(n_dofs()));
+    u_r.reinit(dofs.size());
+    force_out.reinit(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        u_r[i]       = solution[dofs[i]];
+        force_out[i] = prescribed[i] ? normal * residual[dofs[i]] : force[i];
+      }
+  }
+
+
+
+  void
   BodyDiscretization::volumetric_field(const Vector<double> &solution,
                                        DoFHandler<2>        &dof_handler_out,
                                        Vector<double>       &field) const

@@ -95,37 +95,11 @@ namespace coaxfit
                     Vector<double>          &u_r,
                     Vector<double>          &force_out)
   {
-    interface_values(prescribed,
-                     force,
-                     solve_field(prescribed, displacement, force),
-                     u_r,
-                     force_out);
-  }
-
-
-
-  void
-  BodySolver::interface_values(const std::vector<bool> &prescribed,
-                               const Vector<double>    &force,
-                               const Vector<double>    &solution,
-                               Vector<double>          &u_r,
-                               Vector<double>          &force_out) const
-  {
-    const auto  &dofs   = body.get_interface_dofs();
-    const double normal = body.geometry().contact_normal();
-
-    // Reactions: the rows of K u - f (f = 0 at a prescribed point).
-    Vector<double> residual(body.n_dofs());
-    body.get_stiffness_matrix().residual(residual,
-                                         solution,
-                                         Vector<double>(body.n_dofs()));
-    u_r.reinit(dofs.size());
-    force_out.reinit(dofs.size());
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      {
-        u_r[i]       = solution[dofs[i]];
-        force_out[i] = prescribed[i] ? normal * residual[dofs[i]] : force[i];
-      }
+    body.interface_values(prescribed,
+                          force,
+                          solve_field(prescribed, displacement, force),
+                          u_r,
+                          force_out);
   }
 
 

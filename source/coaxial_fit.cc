@@ -220,7 +220,7 @@ namespace coaxfit
 
 
   std::vector<std::string>
-  CoaxialFit::warnings() const
+  CoaxialFit::warnings(const PressureSummary &pressure) const
   {
     std::vector<std::string> list;
     if (!coupling->converged())
@@ -232,7 +232,6 @@ namespace coaxfit
           << ", |dp|/p = " << coupling->traction_residual() << ")";
         list.push_back(w.str());
       }
-    const PressureSummary pressure = pressure_summary();
     if (!parameters.contact.unilateral && pressure.min < 0.)
       {
         std::ostringstream w;
@@ -298,7 +297,7 @@ namespace coaxfit
   {
     const PressureSummary          pressure = pressure_summary();
     const Complementarity          complementarity(*interface, *coupling);
-    const std::vector<std::string> warning_list = warnings();
+    const std::vector<std::string> warning_list = warnings(pressure);
     print_report(pressure, complementarity, warning_list);
 
     const std::string             directory = parameters.output_directory();

@@ -119,29 +119,18 @@ namespace coaxfit
     hub_field   = x2;
 
     // Contact force from the shaft's reaction (row of K1 u1); the hub's
-    // reaction must be its opposite (checked as the traction mismatch).
-    const unsigned int m = dofs1.size();
-    force.reinit(m);
-    u1.reinit(m);
-    u2.reinit(m);
-    double mismatch = 0., magnitude = 0.;
-    for (unsigned int i = 0; i < m; ++i)
-      {
-        u1[i]     = x1[dofs1[i]];
-        u2[i]     = x2[dofs2[i]];
-        double r1 = 0., r2 = 0.;
-        for (auto e = K1.begin(dofs1[i]); e != K1.end(dofs1[i]); ++e)
-          r1 += e->value() * x1[e->column()];
-        for (auto e = K2.begin(dofs2[i]); e != K2.end(dofs2[i]); ++e)
-          r2 += e->value() * x2[e->column()];
-        // Outward normals: +r for the shaft, -r for the hub.
-        const double f1 = -r1, f2 = r2;
-        force[i]       = f1;
-        const double w = interface.weights()[i];
-        mismatch       = std::max(mismatch, std::abs(f2 - f1) / w);
-        magnitude = std::max({magnitude, std::abs(f1) / w, std::abs(f2) / w});
-      }
-    last_traction_mismatch = magnitude > 0. ? mismatch / magnitude : 0.;
+    // reaction must be the same force (checked as the traction mismatch).
+    const std::vector<bool> all(dofs1.size(), true);
+    const Vector<double>    no_force(dofs1.size());
+    Vector<double>          hub_force;
+    shaft.interface_values(all, no_force, x1, u1, force);
+    hub.interface_values(all, no_force, x2, u2, hub_force);
+    const double magnitude = std::max(interface.max_pressure(force),
+                                      interface.max_pressure(hub_force));
+    last_traction_mismatch
+      = magnitude > 0. ?
+          interface.max_pressure_difference(force, hub_force) / magnitude :
+          0.;
   }
 
 

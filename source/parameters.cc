@@ -855,8 +855,13 @@ namespace coaxfit
     prm.print_parameters(json_text,
                          ParameterHandler::OutputStyle(
                            ParameterHandler::JSON | ParameterHandler::Short));
+    // The file name goes into a comment line: no control characters.
+    std::string printable = filename;
+    for (char &c : printable)
+      if (std::iscntrl(static_cast<unsigned char>(c)))
+        c = '?';
     parameters.used_prm = "# coaxfit: the parameters of this run (file '"
-                          + filename + "' with the --set overrides)\n"
+                          + printable + "' with the --set overrides)\n"
                           + prm_text.str();
     parameters.used_json = json_text.str();
     return parameters;

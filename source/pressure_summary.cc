@@ -38,7 +38,7 @@ namespace coaxfit
     const Vector<double> gap
       = interface.gap(coupling.u_shaft(), coupling.u_hub());
     const double d     = interface.interference();
-    double       p_max = p.linfty_norm();
+    double       p_max = interface.max_pressure(coupling.contact_force());
     if (p_max == 0.)
       p_max = 1.;
     for (unsigned int i = 0; i < p.size(); ++i)

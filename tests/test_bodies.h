@@ -57,7 +57,7 @@ namespace coaxfit_test
       const Vector<double> f_in(force.begin(), force.end());
       solution = solver->solve_field(prescribed, u_in, f_in);
       Vector<double> u, f;
-      solver->interface_values(prescribed, f_in, solution, u, f);
+      discretization.interface_values(prescribed, f_in, solution, u, f);
       u_r.assign(u.begin(), u.end());
       force_out.assign(f.begin(), f.end());
     }

@@ -65,6 +65,19 @@ namespace coaxfit
     output_results(const Vector<double> &solution,
                    const std::string    &filename) const;
 
+    /**
+     * The interface values of a field @p solution solved for the data
+     * @p prescribed, @p force (a BodySolver's, or a coupled solve's with every
+     * point prescribed): u_r at every point and the contact force
+     * (the reaction where prescribed, @p force elsewhere).
+     */
+    void
+    interface_values(const std::vector<bool> &prescribed,
+                     const Vector<double>    &force,
+                     const Vector<double>    &solution,
+                     Vector<double>          &u_r,
+                     Vector<double>          &force_out) const;
+
     /** Number of interface points. */
     unsigned int
     n_interface_points() const

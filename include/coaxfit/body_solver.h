@@ -49,18 +49,6 @@ namespace coaxfit
                 const Vector<double>    &force);
 
     /**
-     * The interface values of a field @p solution solved for the data
-     * @p prescribed, @p force: u_r at every point and the contact force
-     * (the reaction where prescribed, @p force elsewhere).
-     */
-    void
-    interface_values(const std::vector<bool> &prescribed,
-                     const Vector<double>    &force,
-                     const Vector<double>    &solution,
-                     Vector<double>          &u_r,
-                     Vector<double>          &force_out) const;
-
-    /**
      * Make (or find in the cache) the factorization for the set of
      * prescribed points @p prescribed, so that later solves only
      * substitute.

@@ -104,9 +104,9 @@ namespace coaxfit
     std::unique_ptr<InterfaceSolver>
     make_staggered_coupling();
 
-    /** Warnings about the final state, one line each. */
+    /** Warnings about the final state with @p pressure, one line each. */
     std::vector<std::string>
-    warnings() const;
+    warnings(const PressureSummary &pressure) const;
 
     /** The report of the final state, printed always. */
     void

@@ -1,9 +1,11 @@
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <coaxfit/monolithic_solver.h>
 
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -27,23 +29,28 @@ namespace coaxfit
   void
   MonolithicSolver::setup_pattern()
   {
-    // Every entry of K1, and every entry of K2 with its row and its column
-    // each either kept or (tied hub point) replaced by the shaft's DoF: the
-    // union over all active sets.
+    // The condensed matrix of any active set has its entries among those
+    // of the two stiffness matrices side by side with each row and each
+    // column either kept or (tied point) moved to the shaft's DoF: the
+    // union of the patterns of all active sets.
     const SparseMatrix<double>     &K1 = shaft.get_stiffness_matrix();
     const SparseMatrix<double>     &K2 = hub.get_stiffness_matrix();
     const unsigned int              n1 = K1.m(), n = K1.m() + K2.m();
-    const std::vector<unsigned int> target
-      = tie_targets(std::vector<bool>(shaft.get_interface_dofs().size(), true));
+    const AffineConstraints<double> all_tied = tie_constraints(
+      std::vector<bool>(shaft.get_interface_dofs().size(), true));
+    const auto images = [&](const unsigned int i) {
+      const auto *line = all_tied.get_constraint_entries(i);
+      return std::array<unsigned int, 2>{
+        {i, line ? static_cast<unsigned int>((*line)[0].first) : i}};
+    };
     DynamicSparsityPattern dsp(n, n);
     for (unsigned int row = 0; row < K1.m(); ++row)
       for (auto e = K1.begin(row); e != K1.end(row); ++e)
         dsp.add(row, e->column());
     for (unsigned int row = 0; row < K2.m(); ++row)
       for (auto e = K2.begin(row); e != K2.end(row); ++e)
-        for (const unsigned int r : {n1 + row, target[n1 + row]})
-          for (const unsigned int c :
-               {n1 + e->column(), target[n1 + e->column()]})
+        for (const unsigned int r : images(n1 + row))
+          for (const unsigned int c : images(n1 + e->column()))
             dsp.add(r, c);
     pattern.copy_from(dsp);
     cholesky.analyze(SparseMatrix<double>(pattern));
@@ -51,19 +58,23 @@ namespace coaxfit
 
 
 
-  std::vector<unsigned int>
-  MonolithicSolver::tie_targets(const std::vector<bool> &tied) const
+  AffineConstraints<double>
+  MonolithicSolver::tie_constraints(const std::vector<bool> &tied) const
   {
-    const unsigned int        n1 = shaft.n_dofs();
-    std::vector<unsigned int> target(n1 + hub.n_dofs());
-    for (unsigned int i = 0; i < target.size(); ++i)
-      target[i] = i;
-    const auto &dofs1 = shaft.get_interface_dofs();
-    const auto &dofs2 = hub.get_interface_dofs();
+    const unsigned int        n1    = shaft.n_dofs();
+    const auto               &dofs1 = shaft.get_interface_dofs();
+    const auto               &dofs2 = hub.get_interface_dofs();
+    AffineConstraints<double> constraints;
     for (unsigned int i = 0; i < dofs1.size(); ++i)
       if (tied[i])
-        target[n1 + dofs2[i]] = dofs1[i];
-    return target;
+        {
+          constraints.add_line(n1 + dofs2[i]);
+          constraints.add_entry(n1 + dofs2[i], dofs1[i], 1.);
+          constraints.set_inhomogeneity(n1 + dofs2[i],
+                                        interface.interference());
+        }
+    constraints.close();
+    return constraints;
   }
 
 
@@ -75,40 +86,27 @@ namespace coaxfit
     const SparseMatrix<double> &K2 = hub.get_stiffness_matrix();
     const unsigned int          n1 = K1.m(), n = K1.m() + K2.m();
     const auto                 &dofs1 = shaft.get_interface_dofs();
-    const auto                 &dofs2 = hub.get_interface_dofs();
-    const double                d     = interface.interference();
 
     if (pattern.empty())
       setup_pattern();
 
-    // u2 = u1 + d at every tied point: the hub's DoF there is eliminated
-    // (its row and column join the shaft's DoF, the shift d goes to the
-    // right hand side); its own row keeps only a positive diagonal.
-    const std::vector<bool>        &tied   = active_set.in_contact();
-    const std::vector<unsigned int> target = tie_targets(tied);
-
+    // u2 = u1 + d at every tied point, as an inhomogeneous constraint on
+    // the hub's DoF there.
+    const AffineConstraints<double> constraints
+      = tie_constraints(active_set.in_contact());
     SparseMatrix<double> matrix(pattern);
     Vector<double>       rhs(n);
     for (unsigned int row = 0; row < K1.m(); ++row)
       for (auto e = K1.begin(row); e != K1.end(row); ++e)
-        matrix.add(row, e->column(), e->value());
+        matrix.set(row, e->column(), e->value());
     for (unsigned int row = 0; row < K2.m(); ++row)
       for (auto e = K2.begin(row); e != K2.end(row); ++e)
-        {
-          const unsigned int r = target[n1 + row], c = n1 + e->column();
-          matrix.add(r, target[c], e->value());
-          if (target[c] != c) // tied: u_c = u_target + d
-            rhs[r] -= e->value() * d;
-        }
-    for (unsigned int i = 0; i < dofs1.size(); ++i)
-      if (tied[i])
-        matrix.set(n1 + dofs2[i], n1 + dofs2[i], K2.diag_element(dofs2[i]));
+        matrix.set(n1 + row, n1 + e->column(), e->value());
+    constraints.condense(matrix, rhs);
 
     cholesky.solve(*cholesky.factorize(matrix), rhs);
     ++factorizations;
-    for (unsigned int i = 0; i < dofs1.size(); ++i)
-      if (tied[i])
-        rhs[n1 + dofs2[i]] = rhs[dofs1[i]] + d;
+    constraints.distribute(rhs);
 
     Vector<double> x1(K1.m()), x2(K2.m());
     for (unsigned int i = 0; i < K1.m(); ++i)

@@ -15,39 +15,41 @@
 #include <string>
 #include <vector>
 
-int
-main()
+namespace
 {
-  const std::vector<std::string> lines  = {"subsection Geometry",
-                                           "  set R0 = 0",
-                                           "  set R1 = 100",
-                                           "  set R2 = 200",
-                                           "  set L1 = 200",
-                                           "  set L2 = 100",
-                                           "  set d  = 0.25",
-                                           "end",
-                                           "subsection Mesh",
-                                           "  set Axial cells = 6",
-                                           "  set Radial cells = 4",
-                                           "  set Global refinements = 0",
-                                           "end",
-                                           "subsection Coupling",
-                                           "  set Alpha = 0.8",
-                                           "  set Max steps = 100",
-                                           "end",
-                                           "subsection Output",
-                                           "  set Write vtu = false",
-                                           "end",
-                                           "subsection Material",
-                                           "  subsection Shaft",
-                                           "    set E  = 2e5",
-                                           "    set nu = 0.33",
-                                           "  end",
-                                           "  subsection Hub",
-                                           "    set E  = 2e5",
-                                           "    set nu = 0.33",
-                                           "  end",
-                                           "end"};
+  /** A valid parameter file, line by line. */
+  const std::vector<std::string> lines = {"subsection Geometry",
+                                          "  set R0 = 0",
+                                          "  set R1 = 100",
+                                          "  set R2 = 200",
+                                          "  set L1 = 200",
+                                          "  set L2 = 100",
+                                          "  set d  = 0.25",
+                                          "end",
+                                          "subsection Mesh",
+                                          "  set Axial cells = 6",
+                                          "  set Radial cells = 4",
+                                          "  set Global refinements = 0",
+                                          "end",
+                                          "subsection Coupling",
+                                          "  set Alpha = 0.8",
+                                          "  set Max steps = 100",
+                                          "end",
+                                          "subsection Output",
+                                          "  set Write vtu = false",
+                                          "end",
+                                          "subsection Material",
+                                          "  subsection Shaft",
+                                          "    set E  = 2e5",
+                                          "    set nu = 0.33",
+                                          "  end",
+                                          "  subsection Hub",
+                                          "    set E  = 2e5",
+                                          "    set nu = 0.33",
+                                          "  end",
+                                          "end"};
+
+  /** Values a mutation puts in place of a valid one. */
   const std::vector<std::string> tokens = {"",
                                            "-1",
                                            "0",
@@ -64,26 +66,44 @@ main()
                                            "= 3",
                                            "99",
                                            "1e-9"};
-  std::mt19937                   random(20261121);
-  unsigned int                   valid = 0, rejected = 0, bad = 0;
+
+
+
+  /** One random mutation of the valid file: replace, delete or copy. */
+  std::vector<std::string>
+  mutate(std::mt19937 &random)
+  {
+    std::vector<std::string> mutated = lines;
+    const unsigned int       kind    = random() % 4;
+    const unsigned int       i       = random() % mutated.size();
+    if (kind == 0 || kind == 1) // replace a value
+      {
+        const auto eq = mutated[i].find('=');
+        if (eq != std::string::npos)
+          mutated[i] = mutated[i].substr(0, eq + 1) + " "
+                       + tokens[random() % tokens.size()];
+        else
+          mutated[i] = tokens[random() % tokens.size()];
+      }
+    else if (kind == 2) // delete a line
+      mutated.erase(mutated.begin() + i);
+    else // duplicate a line elsewhere
+      mutated.insert(mutated.begin() + random() % mutated.size(), mutated[i]);
+
+    return mutated;
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  std::mt19937 random(20261121);
+  unsigned int valid = 0, rejected = 0, bad = 0;
   for (unsigned int k = 0; k < 60; ++k)
     {
-      std::vector<std::string> mutated = lines;
-      const unsigned int       kind    = random() % 4;
-      const unsigned int       i       = random() % mutated.size();
-      if (kind == 0 || kind == 1) // replace a value
-        {
-          const auto eq = mutated[i].find('=');
-          if (eq != std::string::npos)
-            mutated[i] = mutated[i].substr(0, eq + 1) + " "
-                         + tokens[random() % tokens.size()];
-          else
-            mutated[i] = tokens[random() % tokens.size()];
-        }
-      else if (kind == 2) // delete a line
-        mutated.erase(mutated.begin() + i);
-      else // duplicate a line elsewhere
-        mutated.insert(mutated.begin() + random() % mutated.size(), mutated[i]);
+      const std::vector<std::string> mutated = mutate(random);
 
       const std::string name = "fuzz_" + std::to_string(k) + ".prm";
       const std::string dir  = "fuzz_out_" + std::to_string(k);

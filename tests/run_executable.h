@@ -9,6 +9,13 @@
 
 namespace coaxfit_test
 {
+  /** The coaxfit executable of this test's own build flavour. */
+#ifdef DEBUG
+  inline const char *const coaxfit_executable = COAXFIT_EXECUTABLE_DEBUG;
+#else
+  inline const char *const coaxfit_executable = COAXFIT_EXECUTABLE_RELEASE;
+#endif
+
   /** What one run of the executable left behind. */
   struct RunResult
   {
@@ -24,7 +31,7 @@ namespace coaxfit_test
   inline RunResult
   run_coaxfit(const std::string &directory, const std::string &arguments)
   {
-    const std::string command = "timeout 60 " + std::string(COAXFIT_EXECUTABLE)
+    const std::string command = "timeout 60 " + std::string(coaxfit_executable)
                                 + " --set Output/Directory=" + directory + " "
                                 + arguments + " 2>&1 >/dev/null";
     FILE       *pipe = popen(command.c_str(), "r");

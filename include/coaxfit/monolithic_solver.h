@@ -1,6 +1,7 @@
 #ifndef coaxfit_monolithic_solver_h
 #define coaxfit_monolithic_solver_h
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <coaxfit/body_discretization.h>
@@ -14,11 +15,12 @@ namespace coaxfit
    * The reference for the staggered method: both bodies in one linear
    * system. Shaft and hub DoFs are numbered one after the other; at every
    * interface point in contact the hub's u_r is tied to the shaft's,
-   * u2 = u1 + d, by eliminating the hub's DoF there, so the system is
-   * solved for both bodies at once by one sparse Cholesky factorization
-   * (CHOLMOD). The sparsity pattern is built once with every point tied (a
-   * superset of the pattern of any active set) and analyzed once; each
-   * active set then costs one numeric factorization.
+   * u2 = u1 + d, an inhomogeneous AffineConstraints line that condenses
+   * the hub's DoF there away, so the system is solved for both bodies at once
+   * by one sparse Cholesky factorization (CHOLMOD). The sparsity pattern is
+   * built once with every point tied (a superset of the pattern of any active
+   * set) and analyzed once; each active set then costs one numeric
+   * factorization.
    *
    * Unilateral contact is handled by a primal-dual active set loop (as in
    * deal.II's step-41): after each solve, a tied point whose contact force
@@ -56,11 +58,12 @@ namespace coaxfit
     setup_pattern();
 
     /**
-     * For every DoF of the coupled numbering (shaft, then hub), the DoF it
-     * is assembled into: itself, or for a tied hub point the shaft's DoF.
+     * The tie of the coupled numbering (shaft DoFs, then hub DoFs): at every
+     * tied point the hub's interface DoF is constrained to the shaft's plus
+     * the interference, u2 = u1 + d.
      */
-    std::vector<unsigned int>
-    tie_targets(const std::vector<bool> &tied) const;
+    AffineConstraints<double>
+    tie_constraints(const std::vector<bool> &tied) const;
 
     const BodyDiscretization &shaft;
     const BodyDiscretization &hub;

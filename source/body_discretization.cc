@@ -10,9 +10,12 @@
 
 #include <coaxfit/axisymmetric.h>
 #include <coaxfit/body_discretization.h>
+#include <coaxfit/input_error.h>
 #include <coaxfit/stress_postprocessor.h>
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -297,6 +300,10 @@ namespace coaxfit
   BodyDiscretization::output_results(const Vector<double> &solution,
                                      const std::string    &filename) const
   {
+    for (const double value : solution)
+      if (!std::isfinite(value))
+        throw std::runtime_error("the displacement to be written to '"
+                                 + filename + "' is not finite");
     DoFHandler<2>  dof_handler_out(triangulation);
     Vector<double> field;
     if (reduced_volumetric_integration)
@@ -328,11 +335,19 @@ namespace coaxfit
     data_out.build_patches(fe.degree);
 
     std::ofstream out(filename);
+    try
+      {
+        data_out.write_vtu(out);
+        out.close();
+      }
+    catch (const ExceptionBase &) // deal.II's ExcIO on a failed stream
+      {
+        out.setstate(std::ios::badbit);
+      }
     if (!out)
-      throw std::runtime_error("cannot write '" + filename + "'");
-    data_out.write_vtu(out);
-    out.close();
-    if (!out)
-      throw std::runtime_error("cannot write '" + filename + "'");
+      throw ResourceError("writing '"
+                          + std::filesystem::path(filename).filename().string()
+                          + "' failed: disk full, quota or file size limit "
+                            "reached (the earlier results are untouched)");
   }
 } // namespace coaxfit

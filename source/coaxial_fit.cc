@@ -5,6 +5,8 @@
 #include <coaxfit/concurrency.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/monolithic_solver.h>
+#include <coaxfit/resources.h>
+#include <coaxfit/result_directory.h>
 #include <coaxfit/result_writers.h>
 #include <coaxfit/staggered_coupling.h>
 
@@ -26,17 +28,6 @@ namespace coaxfit
       g.grading_ratio      = parameters.mesh.grading_ratio;
       g.global_refinements = parameters.mesh.global_refinements;
       return g;
-    }
-
-    void
-    make_output_directory(const std::string &directory)
-    {
-      std::error_code error;
-      std::filesystem::create_directories(directory, error);
-      if (error || !std::filesystem::is_directory(directory))
-        throw InputError("parameter Output/Directory = " + directory
-                         + ": cannot create the directory (" + error.message()
-                         + ")");
     }
   } // namespace
 
@@ -293,14 +284,13 @@ namespace coaxfit
 
 
   void
-  CoaxialFit::output_results()
+  CoaxialFit::output_results(const std::string &directory)
   {
     const PressureSummary          pressure = pressure_summary();
     const Complementarity          complementarity(*interface, *coupling);
     const std::vector<std::string> warning_list = warnings(pressure);
     print_report(pressure, complementarity, warning_list);
 
-    const std::string             directory = parameters.output_directory();
     std::map<std::string, double> timing;
     const RunResults              results{parameters,
                              *shaft,
@@ -333,7 +323,6 @@ namespace coaxfit
 
     for (const std::string &line : lines)
       pcout << "  " << line << '\n';
-    pcout << "  results in " << directory << '\n';
     if (parameters.output.print_timing)
       pcout << std::fixed << std::setprecision(3) << "  wall time: setup "
             << timing["setup"] << " s, factorization "
@@ -348,30 +337,21 @@ namespace coaxfit
   bool
   CoaxialFit::run()
   {
-    // Created first, so that a directory that cannot be made stops the run
-    // before any work; removed again if the run fails before writing.
-    const std::string directory = parameters.output_directory();
-    const bool        created   = !std::filesystem::exists(directory);
-    make_output_directory(directory);
-    bool converged = false;
-    try
-      {
-        setup_system();
-        pcout << "coaxfit: case " << parameters.case_name << '\n'
-              << "  shaft: " << shaft->n_cells() << " cells, "
-              << shaft->n_dofs() << " DoFs;  hub: " << hub->n_cells()
-              << " cells, " << hub->n_dofs() << " DoFs;  "
-              << interface->n_points() << " interface points, FE_Q("
-              << parameters.mesh.degree << ")\n";
-        converged = solve(pcout.is_active() ? &out : nullptr);
-      }
-    catch (...)
-      {
-        if (created && std::filesystem::is_empty(directory))
-          std::filesystem::remove(directory);
-        throw;
-      }
-    output_results();
+    // Memory and the output directory are checked first, so that a run
+    // that cannot finish or cannot be written stops before any work.
+    check_memory(parameters);
+    ResultDirectory directory(parameters.output_directory(),
+                              all_result_file_names());
+    setup_system();
+    pcout << "coaxfit: case " << parameters.case_name << '\n'
+          << "  shaft: " << shaft->n_cells() << " cells, " << shaft->n_dofs()
+          << " DoFs;  hub: " << hub->n_cells() << " cells, " << hub->n_dofs()
+          << " DoFs;  " << interface->n_points() << " interface points, FE_Q("
+          << parameters.mesh.degree << ")\n";
+    const bool converged = solve(pcout.is_active() ? &out : nullptr);
+    output_results(directory.staging_path());
+    directory.commit();
+    pcout << "  results in " << parameters.output_directory() << '\n';
     return converged;
   }
 } // namespace coaxfit

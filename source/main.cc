@@ -1,9 +1,12 @@
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/input_error.h>
+#include <coaxfit/interruption.h>
 #include <coaxfit/parameters.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <new>
 
 namespace
 {
@@ -27,17 +30,39 @@ namespace
       "Results go to Output/Directory (default output/<FILE's base name>):\n"
       "contact_pressure.csv, convergence.csv, summary.json, parameters.prm\n"
       "(repeats the run), parameters.json, shaft.vtu, hub.vtu,\n"
-      "interface.vtp and solution.pvd. Exit code 0: converged; 1: bad\n"
-      "input; 2: the coupling did not converge or diverged; 3: internal\n"
-      "or system error.\n";
+      "interface.vtp and solution.pvd, replacing that directory as a whole\n"
+      "once every file is complete (a failed or interrupted run leaves the\n"
+      "earlier results untouched).\n"
+      "\n"
+      "Exit codes: 0 converged; 1 bad input or a run refused for its\n"
+      "resources; 2 the coupling did not converge (the state is written,\n"
+      "marked \"converged\": false) or diverged (nothing written); 3 internal\n"
+      "or system error (out of memory, disk full); 130, 143 interrupted by\n"
+      "SIGINT, SIGTERM (earlier results untouched).\n";
+
+  /** Standard output must have taken everything written to it. */
+  void
+  check_standard_output()
+  {
+    std::cout.flush();
+    if (!std::cout)
+      throw coaxfit::ResourceError("cannot write to standard output");
+  }
 } // namespace
 
+/**
+ * The program; main() ends the process with its exit code without running
+ * the libraries' exit handlers (everything is written and flushed by then):
+ * OpenBLAS's never returns when its threads could not get their buffers
+ * under an address space limit.
+ */
 int
-main(int argc, char **argv)
+coaxfit_main(int argc, char **argv)
 {
   using namespace coaxfit;
   try
     {
+      Interruption::install();
       std::vector<std::pair<std::string, std::string>> overrides;
       std::string                                      filename;
       bool                                             quiet = false;
@@ -47,11 +72,20 @@ main(int argc, char **argv)
           if (arg == "--help" || arg == "-h")
             {
               std::cout << usage;
+              check_standard_output();
               return 0;
             }
           else if (arg == "--print-parameters")
             {
-              print_parameters(std::cout);
+              try
+                {
+                  print_parameters(std::cout);
+                }
+              catch (const std::exception &) // deal.II's ExcIO
+                {
+                  std::cout.setstate(std::ios::badbit);
+                }
+              check_standard_output();
               return 0;
             }
           else if (arg == "--quiet" || arg == "-q")
@@ -82,7 +116,9 @@ main(int argc, char **argv)
 
       const Parameters parameters = read_parameters(filename, overrides);
       CoaxialFit       fit(parameters, std::cout, !quiet);
-      return fit.run() ? 0 : 2;
+      const bool       converged = fit.run();
+      check_standard_output();
+      return converged ? 0 : 2;
     }
   catch (const InputError &e)
     {
@@ -94,9 +130,38 @@ main(int argc, char **argv)
       std::cerr << "coaxfit: error: " << e.what() << std::endl;
       return 2;
     }
-  catch (const std::exception &e)
+  catch (const ResourceError &e)
     {
-      std::cerr << "coaxfit: internal error: " << e.what() << std::endl;
+      std::cerr << "coaxfit: error: " << e.what() << std::endl;
       return 3;
     }
+  catch (const std::bad_alloc &)
+    {
+      std::cerr << "coaxfit: error: out of memory (try fewer "
+                   "Mesh/Global refinements)"
+                << std::endl;
+      return 3;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "coaxfit: internal error: " << one_line_message(e)
+                << std::endl;
+      return 3;
+    }
+  catch (...)
+    {
+      std::cerr << "coaxfit: internal error: unknown exception" << std::endl;
+      return 3;
+    }
+}
+
+
+
+int
+main(int argc, char **argv)
+{
+  const int code = coaxfit_main(argc, argv);
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(code);
 }

@@ -1,12 +1,28 @@
 #include <deal.II/grid/grid_generator.h>
 
+#include <coaxfit/input_error.h>
 #include <coaxfit/mesh.h>
 
 #include <cmath>
 #include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace coaxfit
 {
+  namespace
+  {
+    std::string
+    number(const double x)
+    {
+      std::ostringstream text;
+      text << x;
+      return text.str();
+    }
+  } // namespace
+
+
   std::vector<double>
   graded_spacing(const double       length,
                  const unsigned int n,
@@ -35,8 +51,20 @@ namespace coaxfit
     // Smallest n for which first_size (1 + r + ... + r^(n-1)) >= length.
     unsigned int n   = 0;
     double       sum = 0., size = first_size;
+    // MeshParameters::validate() bounds the grading; a cell this small or a
+    // count this large can only come from a defect.
+    if (!(first_size > 1e-12 * length) || !(ratio >= 1.))
+      throw std::logic_error("growing_spacing: first cell "
+                             + std::to_string(first_size) + " of "
+                             + std::to_string(length));
     while (sum < length * (1. - 1e-12))
       {
+        if (n >= 100000)
+          throw InputError(
+            "parameter Mesh/Grading ratio = " + number(ratio)
+            + ": the longer body needs more than 100000 cells beyond the "
+              "end of contact; use a larger Mesh/Grading ratio or "
+              "proportions of Geometry/L1 and L2 closer to each other");
         sum += size;
         size *= ratio;
         ++n;
@@ -53,8 +81,8 @@ namespace coaxfit
 
 
 
-  void
-  make_body_mesh(Triangulation<2> &triangulation, const BodyGeometry &geometry)
+  std::pair<std::vector<double>, std::vector<double>>
+  body_spacing(const BodyGeometry &geometry)
   {
     const double wall = geometry.r_outer - geometry.r_inner;
 
@@ -79,6 +107,27 @@ namespace coaxfit
         axial.insert(axial.end(), extra.begin(), extra.end());
       }
 
+    return {radial, axial};
+  }
+
+
+
+  std::size_t
+  predicted_dofs(const BodyGeometry &geometry, const unsigned int degree)
+  {
+    const auto [radial, axial]  = body_spacing(geometry);
+    const double cells_per_line = std::pow(2., geometry.global_refinements);
+    const double n_r            = degree * radial.size() * cells_per_line + 1.;
+    const double n_z            = degree * axial.size() * cells_per_line + 1.;
+    return static_cast<std::size_t>(std::min(2. * n_r * n_z, 1e18));
+  }
+
+
+
+  void
+  make_body_mesh(Triangulation<2> &triangulation, const BodyGeometry &geometry)
+  {
+    const auto [radial, axial] = body_spacing(geometry);
     GridGenerator::subdivided_hyper_rectangle(triangulation,
                                               {radial, axial},
                                               Point<2>(geometry.r_inner, 0.),

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <coaxfit/input_error.h>
+#include <coaxfit/parameter_file.h>
 #include <coaxfit/parameters.h>
 
 #include <cmath>
@@ -132,7 +133,7 @@ namespace coaxfit
       if (!condition)
         {
           std::ostringstream msg;
-          msg.precision(10);
+          msg.precision(15);
           msg << "parameter " << name << " = " << value
               << " is out of range: allowed is " << range << '.';
           throw InputError(msg.str());
@@ -159,34 +160,6 @@ namespace coaxfit
       if (dot != std::string::npos && dot + 4 == name.size())
         name = name.substr(0, dot);
       return name.empty() ? std::string("default") : name;
-    }
-
-    /**
-     * One line of text for an exception: deal.II's own message
-     * (ExceptionBase::print_info, without the banner and stack trace) or
-     * what(), with runs of white space folded to one blank.
-     */
-    std::string
-    one_line(const std::exception &exc)
-    {
-      std::ostringstream text;
-      if (const auto *deal = dynamic_cast<const ExceptionBase *>(&exc))
-        deal->print_info(text);
-      else
-        text << exc.what();
-      std::string out;
-      bool        space = false;
-      for (const char c : text.str())
-        if (std::isspace(static_cast<unsigned char>(c)))
-          space = !out.empty();
-        else
-          {
-            if (space)
-              out += ' ';
-            out += c;
-            space = false;
-          }
-      return out;
     }
 
     /** Split `A/B/Name` into its parts. */
@@ -230,7 +203,7 @@ namespace coaxfit
       catch (const std::exception &exc)
         {
           throw InputError("--set " + path + "=" + value + ": "
-                           + one_line(exc));
+                           + one_line_message(exc));
         }
     }
   } // namespace
@@ -291,7 +264,7 @@ namespace coaxfit
                       R0,
                       "Inner radius of the shaft D1 in mm; 0 for a solid "
                       "shaft. Required. Allowed: 0 <= R0 < R1, a wall "
-                      "R1 - R0 of at least 1e-6 R1.",
+                      "R1 - R0 of at least 1e-3 R1.",
                       non_negative,
                       required);
     prm.add_parameter("R1",
@@ -305,7 +278,8 @@ namespace coaxfit
     prm.add_parameter("R2",
                       R2,
                       "Outer radius of the hub D2 in mm. Required. Allowed: "
-                      "R1 < R2 <= 1e4 R1.",
+                      "1.001 R1 <= R2 <= 1e4 R1 (a wall of at least 1e-3 "
+                      "R1).",
                       non_negative,
                       required);
     prm.add_parameter("L1",
@@ -330,7 +304,7 @@ namespace coaxfit
                       "exceeds the bore's by d. The model is linear (small "
                       "strain, both bodies meshed at R1), so d/R1 should "
                       "stay well below 0.01. Required. Allowed: "
-                      "0 < d <= 0.1 R1.",
+                      "1e-9 R1 <= d <= 0.1 R1.",
                       non_negative,
                       required);
     prm.leave_subsection();
@@ -348,10 +322,18 @@ namespace coaxfit
     require(R2 > R1, "Geometry/R2", R2, "R2 > R1 (R1 = " + number(R1) + ")");
     // Proportions a mesh of 2D cells can represent in double precision.
     require(R2 <= 1e4 * R1, "Geometry/R2", R2, "R1 < R2 <= 1e4 R1");
-    require(R1 - R0 >= 1e-6 * R1,
+    // Thinner walls make the stiffness numerically singular (the bound
+    // itself allowed despite round-off in R1 - R0).
+    const double min_wall = 1e-3 * R1 * (1. - 1e-9);
+    require(R1 - R0 >= min_wall,
             "Geometry/R0",
             R0,
-            "a wall R1 - R0 of at least 1e-6 R1");
+            "a shaft wall R1 - R0 of at least 1e-3 R1 (R1 = " + number(R1)
+              + ")");
+    require(R2 - R1 >= min_wall,
+            "Geometry/R2",
+            R2,
+            "a hub wall R2 - R1 of at least 1e-3 R1 (R1 = " + number(R1) + ")");
     require(L1 > 0. && L1 >= 1e-4 * R1 && L1 <= 1e4 * R1,
             "Geometry/L1",
             L1,
@@ -360,7 +342,10 @@ namespace coaxfit
             "Geometry/L2",
             L2,
             "1e-4 R1 <= L2 <= 1e4 R1");
-    require(d > 0. && d <= 0.1 * R1, "Geometry/d", d, "0 < d <= 0.1 R1");
+    require(d >= 1e-9 * R1 && d <= 0.1 * R1,
+            "Geometry/d",
+            d,
+            "1e-9 R1 <= d <= 0.1 R1 (R1 = " + number(R1) + ")");
   }
 
 
@@ -373,8 +358,9 @@ namespace coaxfit
     prm.add_parameter("E",
                       E,
                       "Young's modulus of the " + body_label
-                        + " in MPa. Required. Allowed: E > 0.",
-                      Patterns::Double(0.),
+                        + " in MPa. Required. Allowed: 1e-6 to 1e9 (foams "
+                          "to diamond are 1e-2 to 1.2e6).",
+                      Patterns::Double(1e-6, 1e9),
                       required);
     prm.add_parameter("nu",
                       nu,
@@ -390,7 +376,7 @@ namespace coaxfit
   void
   Material::validate(const std::string &path) const
   {
-    require(E > 0., path + "/E", E, "E > 0");
+    require(E >= 1e-6 && E <= 1e9, path + "/E", E, "1e-6 <= E <= 1e9");
     require(nu > -1. && nu < 0.5, path + "/nu", nu, "-1 < nu < 0.5");
   }
 
@@ -760,9 +746,26 @@ namespace coaxfit
 
 
   void
+  MeshParameters::validate() const
+  {
+    // The smallest cell of a graded direction is ratio^-(cells - 1) of the
+    // largest: beyond 1e6 the mesh cannot be represented sensibly.
+    const unsigned int cells = std::max(axial_cells, radial_cells);
+    require(std::pow(grading_ratio, cells - 1.) <= 1e6,
+            "Mesh/Grading ratio",
+            grading_ratio,
+            "Grading ratio^(cells - 1) <= 1e6 with Mesh/Axial cells = "
+              + std::to_string(axial_cells)
+              + " and Mesh/Radial cells = " + std::to_string(radial_cells));
+  }
+
+
+
+  void
   Parameters::validate() const
   {
     geometry.validate();
+    mesh.validate();
     shaft.validate("Material/Shaft");
     hub.validate("Material/Hub");
     coupling.validate();
@@ -804,6 +807,7 @@ namespace coaxfit
         throw InputError("cannot read parameter file '" + filename + "'");
     }
 
+    check_parameter_file(filename);
     Parameters       parameters;
     ParameterHandler prm;
     parameters.declare_parameters(prm);
@@ -818,7 +822,7 @@ namespace coaxfit
     catch (const std::exception &exc)
       {
         // deal.II's messages about a line already name the file.
-        const std::string message = one_line(exc);
+        const std::string message = one_line_message(exc);
         throw InputError(message.find("of file <") != std::string::npos ?
                            message :
                            "in parameter file '" + filename + "': " + message);

@@ -1,5 +1,7 @@
+#include <coaxfit/input_error.h>
 #include <coaxfit/result_writers.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
@@ -23,7 +25,10 @@ namespace coaxfit
   {
     out.close();
     if (!out)
-      throw std::runtime_error("writing '" + filename + "' failed");
+      throw ResourceError("writing '"
+                          + std::filesystem::path(filename).filename().string()
+                          + "' failed: disk full, quota or file size limit "
+                            "reached (the earlier results are untouched)");
   }
 
 
@@ -43,5 +48,20 @@ namespace coaxfit
         writers.push_back(std::make_unique<PvdWriter>());
       }
     return writers;
+  }
+
+
+  std::set<std::string>
+  all_result_file_names()
+  {
+    OutputParameters everything;
+    everything.write_vtu = true;
+    std::set<std::string> names;
+    for (const auto &writer : make_result_writers(everything))
+      for (const std::string &name : writer->file_names())
+        names.insert(name);
+    for (const std::string &name : SummaryWriter().file_names())
+      names.insert(name);
+    return names;
   }
 } // namespace coaxfit

@@ -5,10 +5,32 @@
 
 #include <algorithm>
 #include <cholmod.h>
+#include <stdexcept>
 #include <string>
 
 namespace coaxfit
 {
+  namespace
+  {
+    /**
+     * Throw for a CHOLMOD call that failed in @p what: memory
+     * exhausted is a ResourceError (exit 3, "out of memory"), anything else
+     * an internal error.
+     */
+    [[noreturn]] void
+    fail(const std::string &what, const cholmod_common &common)
+    {
+      if (common.status == CHOLMOD_OUT_OF_MEMORY
+          || common.status == CHOLMOD_TOO_LARGE)
+        throw ResourceError("out of memory: " + what
+                            + " (try fewer Mesh/Global refinements)");
+      throw std::runtime_error(what + " (CHOLMOD status "
+                               + std::to_string(common.status) + ")");
+    }
+  } // namespace
+
+
+
   SparseCholesky::Factor::Factor(cholmod_factor *L, cholmod_common *common)
     : L(L)
     , common(common)
@@ -119,8 +141,9 @@ namespace coaxfit
                                             CHOLMOD_REAL,
                                             &common);
     if (impl->upper == nullptr)
-      throw SolverError("CHOLMOD could not allocate a matrix of "
-                        + std::to_string(nnz) + " entries");
+      throw ResourceError("out of memory: CHOLMOD could not allocate a "
+                          "matrix of "
+                          + std::to_string(nnz) + " entries");
     auto       *column_start = static_cast<SuiteSparse_long *>(impl->upper->p);
     auto       *row_index    = static_cast<SuiteSparse_long *>(impl->upper->i);
     std::size_t k            = 0;
@@ -149,8 +172,7 @@ namespace coaxfit
                             member.data(),
                             permutation.data(),
                             &common))
-          throw SolverError("CHOLMOD constrained ordering failed (status "
-                            + std::to_string(common.status) + ")");
+          fail("CHOLMOD constrained ordering failed", common);
         const int nmethods        = common.nmethods,
                   ordering        = common.method[0].ordering;
         const int postorder       = common.postorder;
@@ -171,8 +193,9 @@ namespace coaxfit
             for (std::size_t k = first; k < n; ++k)
               {
                 if (member[perm[k]] != 1)
-                  throw SolverError("CHOLMOD did not keep the constrained "
-                                    "ordering");
+                  throw std::runtime_error(
+                    "CHOLMOD did not keep the constrained "
+                    "ordering");
                 position[perm[k]] = k - first;
               }
             for (const auto i : last)
@@ -180,8 +203,7 @@ namespace coaxfit
           }
       }
     if (impl->symbolic == nullptr)
-      throw SolverError("CHOLMOD symbolic analysis failed (status "
-                        + std::to_string(common.status) + ")");
+      fail("CHOLMOD symbolic analysis failed", common);
   }
 
 
@@ -197,15 +219,13 @@ namespace coaxfit
       new Factor(cholmod_l_copy_factor(impl->symbolic, &common), &common));
     if (factor->L == nullptr
         || !cholmod_l_factorize(impl->upper, factor->L, &common))
-      throw SolverError("CHOLMOD factorization failed (status "
-                        + std::to_string(common.status) + ")");
+      fail("CHOLMOD factorization failed", common);
     if (common.status == CHOLMOD_NOT_POSDEF)
-      throw SolverError(
-        "the stiffness matrix is not positive definite (CHOLMOD failed at "
-        "column "
+      throw std::runtime_error(
+        "the stiffness matrix is numerically singular (CHOLMOD: not positive "
+        "definite at column "
         + std::to_string(factor->L->minor) + " of " + std::to_string(matrix.m())
-        + "): the body is not held against rigid motion or a material is "
-          "invalid");
+        + "); the geometry or mesh is too extreme for double precision");
     return factor;
   }
 
@@ -220,8 +240,7 @@ namespace coaxfit
     std::copy(rhs.begin(), rhs.end(), static_cast<double *>(b->x));
     cholmod_dense *x = cholmod_l_solve(CHOLMOD_A, factor.L, b, &common);
     if (x == nullptr)
-      throw SolverError("CHOLMOD solve failed (status "
-                        + std::to_string(common.status) + ")");
+      fail("CHOLMOD solve failed", common);
     const double *values = static_cast<const double *>(x->x);
     std::copy(values, values + rhs.size(), rhs.begin());
     cholmod_l_free_dense(&x, &common);
@@ -270,8 +289,9 @@ namespace coaxfit
     const char      lower = 'L';
     potri(&lower, &n, block.data(), &n, &info);
     if (info != 0)
-      throw SolverError("LAPACK dpotri failed (info " + std::to_string(info)
-                        + ") inverting the interface Schur complement");
+      throw std::runtime_error("LAPACK dpotri failed (info "
+                               + std::to_string(info)
+                               + ") inverting the interface Schur complement");
 
     // Back to the caller's numbering of the unknowns.
     inverse.reinit(n, n);

@@ -8,7 +8,7 @@ namespace coaxfit
   ContactPressureWriter::write(const RunResults  &results,
                                const std::string &directory) const
   {
-    const std::string      name   = "contact_pressure.csv";
+    const std::string      name   = file_names()[0];
     std::ofstream          out    = open_result_file(directory + "/" + name);
     const InterfaceSolver &solver = results.solver;
     const Vector<double>   gap
@@ -23,5 +23,12 @@ namespace coaxfit
     close_result_file(out, directory + "/" + name);
     return name + ": pressure and gap at "
            + std::to_string(results.interface.n_points()) + " points";
+  }
+
+
+  std::vector<std::string>
+  ContactPressureWriter::file_names() const
+  {
+    return {"contact_pressure.csv"};
   }
 } // namespace coaxfit

@@ -8,7 +8,7 @@ namespace coaxfit
   ConvergenceWriter::write(const RunResults  &results,
                            const std::string &directory) const
   {
-    const std::string name = "convergence.csv";
+    const std::string name = file_names()[0];
     std::ofstream     out  = open_result_file(directory + "/" + name);
     out << "step,kind,alpha,displacement_mismatch_relative,"
            "traction_mismatch_relative\n";
@@ -19,5 +19,12 @@ namespace coaxfit
     close_result_file(out, directory + "/" + name);
     return name + ": " + std::to_string(results.solver.history().size())
            + " steps";
+  }
+
+
+  std::vector<std::string>
+  ConvergenceWriter::file_names() const
+  {
+    return {"convergence.csv"};
   }
 } // namespace coaxfit

@@ -8,7 +8,7 @@ namespace coaxfit
   InterfaceVtpWriter::write(const RunResults  &results,
                             const std::string &directory) const
   {
-    const std::string       name = "interface.vtp";
+    const std::string       name = file_names()[0];
     std::ofstream           out  = open_result_file(directory + "/" + name);
     const ContactInterface &interface = results.interface;
     const InterfaceSolver  &solver    = results.solver;
@@ -49,5 +49,12 @@ namespace coaxfit
         << n << "\n</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
     close_result_file(out, directory + "/" + name);
     return name + ": the contact surface";
+  }
+
+
+  std::vector<std::string>
+  InterfaceVtpWriter::file_names() const
+  {
+    return {"interface.vtp"};
   }
 } // namespace coaxfit

@@ -8,10 +8,11 @@ namespace coaxfit
   ParametersWriter::write(const RunResults  &results,
                           const std::string &directory) const
   {
+    const std::vector<std::string> names = file_names();
     for (const auto &[name, text] :
          {std::pair<std::string, const std::string &>{
-            "parameters.prm", results.parameters.used_prm},
-          {"parameters.json", results.parameters.used_json}})
+            names[0], results.parameters.used_prm},
+          {names[1], results.parameters.used_json}})
       {
         std::ofstream out = open_result_file(directory + "/" + name);
         out << text;
@@ -19,6 +20,13 @@ namespace coaxfit
       }
     return "parameters.prm, parameters.json: the parameters of this run "
            "(repeat it with coaxfit "
-           + directory + "/parameters.prm)";
+           + results.parameters.output_directory() + "/parameters.prm)";
+  }
+
+
+  std::vector<std::string>
+  ParametersWriter::file_names() const
+  {
+    return {"parameters.prm", "parameters.json"};
   }
 } // namespace coaxfit

@@ -8,7 +8,7 @@ namespace coaxfit
   PvdWriter::write(const RunResults &, const std::string &directory) const
   {
     // One time step, three parts: ParaView shows them together.
-    const std::string name = "solution.pvd";
+    const std::string name = file_names()[0];
     std::ofstream     out  = open_result_file(directory + "/" + name);
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
            "version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -20,5 +20,12 @@ namespace coaxfit
     out << "</Collection>\n</VTKFile>\n";
     close_result_file(out, directory + "/" + name);
     return name + ": open this one in ParaView";
+  }
+
+
+  std::vector<std::string>
+  PvdWriter::file_names() const
+  {
+    return {"solution.pvd"};
   }
 } // namespace coaxfit

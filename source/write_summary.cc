@@ -128,12 +128,19 @@ namespace coaxfit
     timing["units"] = "s";
     j["timing"]     = timing;
 
-    const std::string name = "summary.json";
+    const std::string name = file_names()[0];
     std::ofstream     out  = open_result_file(directory + "/" + name);
     // Non-finite numbers become null; bytes that are not UTF-8 (a file
     // name) are replaced, so the file is always valid JSON.
     out << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
     close_result_file(out, directory + "/" + name);
     return name + ": the figures of this run";
+  }
+
+
+  std::vector<std::string>
+  SummaryWriter::file_names() const
+  {
+    return {"summary.json"};
   }
 } // namespace coaxfit

@@ -3,7 +3,10 @@
 // and the allowed range, exit code 1, and no output directory. A diverging
 // constant alpha (0.2 for variant 5, whose convergent range is about
 // 0.38-0.98) must stop with exit code 2, a one-line message naming alpha,
-// and no output either (so no NaN can be written).
+// and no output either (so no NaN can be written). Hostile input that
+// once crashed, hung or was misclassified (subnormal numbers, walls too
+// thin for double precision, grading overflow, include cycles, deep JSON,
+// a full standard output) gets the same treatment (exit 3 for the last).
 
 #include "run_executable.h"
 
@@ -115,4 +118,35 @@ main()
   run("directory_not_creatable",
       "--set Output/Directory=a_file/sub "
         + file_with("directory_not_creatable", ""));
+
+  // Hostile input that once crashed, hung or ended with exit 2 or 3.
+  run("d_subnormal", geometry("d_subnormal", "d = 1e-320"));
+  run("shaft_wall_too_thin", geometry("shaft_wall_too_thin", "R0 = 99.9999"));
+  run("hub_wall_too_thin", geometry("hub_wall_too_thin", "R2 = 100.00000001"));
+  run("E_huge",
+      file_with("E_huge",
+                "subsection Material\n subsection Hub\n  set E = 1e300\n "
+                "end\nend\n"));
+  run("grading_overflow",
+      "--set \"Mesh/Axial cells=2200\" --set \"Mesh/Radial cells=1\" "
+        + file_with("grading_overflow", ""));
+  run("too_many_cells_beyond_contact",
+      "--set \"Mesh/Grading ratio=1\" --set Geometry/L1=1e6 "
+        + file_with("too_many_cells_beyond_contact", ""));
+  run("directory_name_too_long",
+      "--set Output/Directory=" + std::string(300, 'x') + " "
+        + file_with("directory_name_too_long", ""));
+  std::ofstream("includes_itself.prm") << "include includes_itself.prm\n";
+  run("include_cycle", "includes_itself.prm");
+  std::ofstream("deep.json")
+    << std::string(100000, '[') << std::string(100000, ']');
+  run("json_nested_too_deep", "deep.json");
+  {
+    // Standard output on a full device: exit 3 and one line.
+    const coaxfit_test::RunResult r
+      = coaxfit_test::run_command(std::string(coaxfit_test::coaxfit_executable)
+                                  + " --print-parameters 2>&1 >/dev/full");
+    std::cout << "print_parameters_to_full_device: exit code " << r.exit_code
+              << "\n  " << r.message;
+  }
 }

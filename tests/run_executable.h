@@ -25,15 +25,12 @@ namespace coaxfit_test
   };
 
   /**
-   * Run `timeout 60 coaxfit --set Output/Directory=DIR ARGUMENTS`, discard
-   * standard output, return exit code and standard error.
+   * Run a shell @p command whose standard output is the text to capture
+   * (redirect as needed); return its exit code and that text.
    */
   inline RunResult
-  run_coaxfit(const std::string &directory, const std::string &arguments)
+  run_command(const std::string &command)
   {
-    const std::string command = "timeout 60 " + std::string(coaxfit_executable)
-                                + " --set Output/Directory=" + directory + " "
-                                + arguments + " 2>&1 >/dev/null";
     FILE       *pipe = popen(command.c_str(), "r");
     std::string message;
     char        buffer[4096];
@@ -44,6 +41,18 @@ namespace coaxfit_test
     for (const char c : message)
       lines += (c == '\n');
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, message, lines};
+  }
+
+  /**
+   * Run `timeout 60 coaxfit --set Output/Directory=DIR ARGUMENTS`, discard
+   * standard output, return exit code and standard error.
+   */
+  inline RunResult
+  run_coaxfit(const std::string &directory, const std::string &arguments)
+  {
+    return run_command("timeout 60 " + std::string(coaxfit_executable)
+                       + " --set Output/Directory=" + directory + " "
+                       + arguments + " 2>&1 >/dev/null");
   }
 } // namespace coaxfit_test
 

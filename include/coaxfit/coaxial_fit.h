@@ -38,7 +38,8 @@ namespace coaxfit
    * interface and factorizations; solve() runs the selected solver
    * (staggered coupling or monolithic reference); output_results() writes
    * the result files through the ResultWriters and summary.json. run() does
-   * all three.
+   * all three, with the files staged in a ResultDirectory that replaces
+   * Output/Directory as a whole once every file is complete.
    */
   class CoaxialFit
   {
@@ -52,8 +53,10 @@ namespace coaxfit
                         bool              verbose = true);
 
     /**
-     * Run the case. Returns true if the coupling converged; throws
-     * SolverError if it diverged (then no result file is written).
+     * Run the case. Returns true if the coupling converged (false: the state
+     * is written, marked not converged); throws SolverError if it diverged
+     * and InputError if Output/Directory cannot be used (checked before any
+     * work). A run that throws leaves the earlier results untouched.
      */
     bool
     run();
@@ -66,9 +69,9 @@ namespace coaxfit
     bool
     solve(std::ostream *progress);
 
-    /** Write the result files and print the report. */
+    /** Print the report and write the result files into @p directory. */
     void
-    output_results();
+    output_results(const std::string &directory);
 
     /** The coupling (after solve()). */
     const InterfaceSolver &

@@ -30,6 +30,26 @@ namespace coaxfit
       : std::runtime_error(message)
     {}
   };
+
+  /**
+   * A failure of the machine rather than of the input or the method: memory
+   * or disk exhausted (exit code 3, message "out of memory: ..." etc.).
+   */
+  class ResourceError : public std::runtime_error
+  {
+  public:
+    explicit ResourceError(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  /**
+   * The message of @p exc on one line: for deal.II's exceptions the
+   * "Additional information" text (ExceptionBase::print_info), without the
+   * banner and stack trace; white space runs collapsed to one blank.
+   */
+  std::string
+  one_line_message(const std::exception &exc);
 } // namespace coaxfit
 
 #endif

@@ -3,6 +3,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
@@ -69,6 +71,21 @@ namespace coaxfit
    */
   std::vector<double>
   growing_spacing(double length, double first_size, double ratio);
+
+  /**
+   * The cell sizes of the coarse mesh of a body before refinement: across
+   * the wall (r) and along the axis (z), graded towards the contact surface
+   * and the end of contact.
+   */
+  std::pair<std::vector<double>, std::vector<double>>
+  body_spacing(const BodyGeometry &geometry);
+
+  /**
+   * The number of DoFs of the refined mesh of a body with FE_Q(@p degree)
+   * (two components), known before any mesh is built.
+   */
+  std::size_t
+  predicted_dofs(const BodyGeometry &geometry, unsigned int degree);
 
   /**
    * Build the graded rectangular mesh of one body and set the boundary ids

@@ -106,6 +106,10 @@ namespace coaxfit
     unsigned int          degree                 = 2;
     VolumetricIntegration volumetric_integration = VolumetricIntegration::full;
 
+    /** The grading must leave cells of representable size. */
+    void
+    validate() const;
+
     void
     declare_parameters(ParameterHandler &prm);
 

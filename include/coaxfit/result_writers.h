@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,10 @@ namespace coaxfit
 
     virtual std::string
     write(const RunResults &results, const std::string &directory) const = 0;
+
+    /** The names of the files write() creates. */
+    virtual std::vector<std::string>
+    file_names() const = 0;
   };
 
   /** contact_pressure.csv: z, pressure, u_r of both bodies, gap, status. */
@@ -54,6 +59,9 @@ namespace coaxfit
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
   };
 
   /** convergence.csv: one row per coupling step. */
@@ -63,6 +71,9 @@ namespace coaxfit
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
   };
 
   /**
@@ -76,6 +87,9 @@ namespace coaxfit
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
   };
 
   /** shaft.vtu or hub.vtu: the displacement and stress fields of a body. */
@@ -88,6 +102,9 @@ namespace coaxfit
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
 
   private:
     const bool shaft;
@@ -103,6 +120,9 @@ namespace coaxfit
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
   };
 
   /** solution.pvd: shaft.vtu, hub.vtu and interface.vtp as one collection. */
@@ -112,6 +132,9 @@ namespace coaxfit
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
   };
 
   /**
@@ -125,11 +148,21 @@ namespace coaxfit
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
   };
 
   /** The writers of the files that @p output asks for, summary.json aside. */
   std::vector<std::unique_ptr<ResultWriter>>
   make_result_writers(const OutputParameters &output);
+
+  /**
+   * The name of every file any run may write (all writers, summary.json
+   * included): what an existing result directory may contain.
+   */
+  std::set<std::string>
+  all_result_file_names();
 
   /**
    * Open @p filename for writing with 15 significant digits; throws if it

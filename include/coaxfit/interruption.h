@@ -1,0 +1,51 @@
+#ifndef coaxfit_interruption_h
+#define coaxfit_interruption_h
+
+#include <mutex>
+#include <string>
+
+namespace coaxfit
+{
+  /**
+   * SIGINT, SIGTERM and SIGHUP, handled so that an interrupted run never
+   * leaves a half-written result.
+   *
+   * install() sets a handler for these signals that only writes the signal
+   * number into a pipe (the one async-signal-safe step; any thread may
+   * receive the signal, including the libraries' own threads started before
+   * main), and starts one watcher thread that reads the pipe. On a signal
+   * the watcher takes the commit mutex (so a ResultDirectory that is
+   * moving its files into place finishes first), removes the staging
+   * directory of the run if there is one, prints one line and ends the
+   * process with exit code 128 + the signal number (130 for SIGINT, 143
+   * for SIGTERM). install() also ignores SIGXFSZ, so that exceeding a file
+   * size limit is a write error that the writers report rather than a
+   * signal that kills the run.
+   */
+  namespace Interruption
+  {
+    /** Set the handlers and start the watcher (once, first in main). */
+    void
+    install();
+
+    /**
+     * The mutex held while the staging directory is created, moved into
+     * place or removed; the watcher takes it before it cleans up.
+     */
+    std::mutex &
+    mutex();
+
+    /**
+     * The staging directory to remove on a signal (empty: none) and the
+     * target its results go to, for the message. Call with mutex() held.
+     */
+    void
+    set_staging(const std::string &staging, const std::string &target);
+
+    /** Note that the results are in place (for the message). */
+    void
+    set_committed();
+  } // namespace Interruption
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,37 @@
+#ifndef coaxfit_resources_h
+#define coaxfit_resources_h
+
+#include <coaxfit/parameters.h>
+
+#include <cstddef>
+
+namespace coaxfit
+{
+  /**
+   * The memory (bytes) a run with @p n_dofs DoFs in both bodies together
+   * and FE_Q(@p degree) allocates for its matrices and sparse factors, whose
+   * fill grows like n log n in 2D. The constants are
+   * calibrated against the measured peak resident size of runs of the
+   * default case (see benchmarks/README.md, "Memory"), with a margin.
+   */
+  double
+  estimated_memory(std::size_t n_dofs, unsigned int degree);
+
+  /**
+   * The memory this process may still give to matrices (bytes): the
+   * smaller of the system's available memory (/proc/meminfo, MemAvailable)
+   * and what the address space limit (ulimit -v) leaves, each less what
+   * the libraries and threads need besides.
+   */
+  double
+  available_memory();
+
+  /**
+   * Refuse a run whose estimated memory exceeds the available memory, before
+   * any mesh is built: throws InputError naming Mesh/Global refinements.
+   */
+  void
+  check_memory(const Parameters &parameters);
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,79 @@
+#ifndef coaxfit_result_directory_h
+#define coaxfit_result_directory_h
+
+#include <set>
+#include <string>
+
+namespace coaxfit
+{
+  /**
+   * The output directory of one run, replaced as a whole or not at all.
+   *
+   * The constructor checks the target (Output/Directory) before any work:
+   * the path must be creatable and writable, and an existing directory may
+   * contain only files that coaxfit writes (@p result_files), since the
+   * whole directory is replaced. It then creates a staging directory
+   * beside the target (same file system), `.NAME.partial-PID`, into which
+   * the writers write. commit() flushes every file to disk and swaps the
+   * staging directory into place with one atomic rename (Linux
+   * renameat2(RENAME_EXCHANGE) when a previous result is there), then
+   * removes the previous result. Until commit() returns, the previous
+   * result is untouched: a run that fails, is interrupted (see
+   * Interruption) or runs out of disk leaves it as it was and removes its
+   * staging directory. Of two runs into one directory, the one that
+   * commits last wins, each leaving a complete set.
+   *
+   * Staging directories of runs killed without a chance to clean up
+   * (SIGKILL, power loss) are removed by the next run into the same target
+   * once their process no longer exists.
+   */
+  class ResultDirectory
+  {
+  public:
+    /**
+     * Check @p target and create the staging directory; throws InputError
+     * naming Output/Directory if the target cannot be used.
+     */
+    ResultDirectory(const std::string           &target,
+                    const std::set<std::string> &result_files);
+
+    /** Removes the staging directory unless committed. */
+    ~ResultDirectory();
+
+    ResultDirectory(const ResultDirectory &) = delete;
+    ResultDirectory &
+    operator=(const ResultDirectory &)
+      = delete;
+
+    /** Where the writers write until commit(). */
+    const std::string &
+    staging_path() const;
+
+    /** The directory the results end up in. */
+    const std::string &
+    target_path() const;
+
+    /**
+     * Flush every staged file to disk and put the staging directory in the
+     * target's place; throws (with the previous result untouched) if that
+     * cannot be done.
+     */
+    void
+    commit();
+
+  private:
+    /** Remove staging directories of dead runs into the same target. */
+    void
+    remove_stale_staging() const;
+
+    /** Swap (or move) the staging directory into the target's place. */
+    void
+    swap_into_place() const;
+
+    std::string target;
+    std::string staging;
+    bool        committed = false;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,92 @@
+#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/input_error.h>
+#include <coaxfit/mesh.h>
+#include <coaxfit/resources.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <sys/resource.h>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** A field of /proc/self/status or /proc/meminfo in bytes (kB there). */
+    double
+    proc_field(const std::string &file, const std::string &name)
+    {
+      std::ifstream in(file);
+      std::string   line;
+      while (std::getline(in, line))
+        if (line.rfind(name + ":", 0) == 0)
+          return 1024. * std::stod(line.substr(name.size() + 1));
+      return std::numeric_limits<double>::infinity();
+    }
+
+    std::string
+    gigabytes(const double bytes)
+    {
+      std::ostringstream text;
+      text << std::fixed << std::setprecision(bytes < 1e10 ? 2 : 0)
+           << bytes / 1e9 << " GB";
+      return text.str();
+    }
+  } // namespace
+
+
+
+  double
+  estimated_memory(const std::size_t n_dofs, const unsigned int degree)
+  {
+    // Peak resident size of the default case (FE_Q(2)) was 0.19, 0.27,
+    // 0.59, 2.01 GB at 12e3, 47e3, 186e3, 741e3 DoFs: 150 MB plus 130 to
+    // 165 bytes per n log2 n. Higher degrees couple more DoFs per row.
+    const double n        = std::max<double>(n_dofs, 2.);
+    const double per_term = 180. * std::max(1., degree / 2.);
+    return per_term * n * std::log2(n);
+  }
+
+
+
+  double
+  available_memory()
+  {
+    // Beyond the matrices and factors: 0.2 GB of resident libraries and
+    // buffers; under an address space limit also the threads' stacks and
+    // malloc arenas that are reserved but not resident (0.4 GB).
+    double available = proc_field("/proc/meminfo", "MemAvailable") - 0.2e9;
+    rlimit limit;
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+      {
+        const double used = proc_field("/proc/self/status", "VmSize");
+        available         = std::min(available,
+                             static_cast<double>(limit.rlim_cur)
+                               - (std::isfinite(used) ? used : 0.) - 0.4e9);
+      }
+    return available;
+  }
+
+
+
+  void
+  check_memory(const Parameters &parameters)
+  {
+    const unsigned int degree = parameters.mesh.degree;
+    const std::size_t  n_dofs
+      = predicted_dofs(shaft_geometry(parameters), degree)
+        + predicted_dofs(hub_geometry(parameters), degree);
+    const double needed    = estimated_memory(n_dofs, degree);
+    const double available = available_memory();
+    if (needed > available)
+      throw InputError(
+        "parameter Mesh/Global refinements = "
+        + std::to_string(parameters.mesh.global_refinements) + ": the run has "
+        + std::to_string(n_dofs) + " DoFs and needs about " + gigabytes(needed)
+        + " of memory, more than the " + gigabytes(std::max(available, 0.))
+        + " available; use fewer Global refinements or Axial/Radial cells");
+  }
+} // namespace coaxfit

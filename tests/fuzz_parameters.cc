@@ -1,15 +1,20 @@
-// Fuzz-style robustness: 60 random mutations (fixed seed) of a valid
+// Fuzz-style robustness: 80 random mutations (fixed seed) of a valid
 // parameter file, each run through the coaxfit executable with a 60 s
-// limit. Every run must end either as a valid run (exit 0 or 2 with
-// summary.json) or with a clean one-line "coaxfit: error:" message and exit
+// limit; the values tried include subnormal and huge numbers, white space
+// and control characters, Max steps 0-3, extreme cell counts and a file
+// that includes itself. Every run must end either as a valid run (exit 0
+// or 2 with a summary.json that parses and no NaN or infinity in any
+// output file) or with a clean one-line "coaxfit: error:" message and exit
 // 1 and no output directory: never a crash (signal, exit 3), a hang or a
 // multi-line error.
 
 #include "run_executable.h"
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 #include <string>
@@ -50,22 +55,12 @@ namespace
                                           "end"};
 
   /** Values a mutation puts in place of a valid one. */
-  const std::vector<std::string> tokens = {"",
-                                           "-1",
-                                           "0",
-                                           "0.5",
-                                           "1e300",
-                                           "-1e-300",
-                                           "nan",
-                                           "inf",
-                                           "abc",
-                                           "1,5",
-                                           "0x10",
-                                           "true",
-                                           "2e5x",
-                                           "= 3",
-                                           "99",
-                                           "1e-9"};
+  const std::vector<std::string> tokens
+    = {"",      "-1",  "0",      "0.5",         "1e300",  "-1e-300",
+       "nan",   "inf", "abc",    "1,5",         "0x10",   "true",
+       "2e5x",  "= 3", "99",     "1e-9",        "1e-320", "4.9e-324",
+       "1e308", "-0",  " 0.5\t", "0.5\x01",     "\x7f",   "1",
+       "2",     "3",   "10000",  "include SELF"};
 
 
 
@@ -92,6 +87,56 @@ namespace
 
     return mutated;
   }
+
+  constexpr unsigned int n_mutations = 80;
+
+  /** summary.json exists and parses as JSON. */
+  bool
+  summary_is_valid(const std::string &directory)
+  {
+    std::ifstream in(directory + "/summary.json");
+    if (!in)
+      return false;
+    try
+      {
+        (void)nlohmann::json::parse(in);
+        return true;
+      }
+    catch (const std::exception &)
+      {
+        return false;
+      }
+  }
+
+  /** No output file holds a NaN or an infinity as a number. */
+  bool
+  all_finite(const std::string &directory)
+  {
+    for (const auto &entry : std::filesystem::directory_iterator(directory))
+      {
+        std::ifstream      in(entry.path());
+        std::ostringstream text;
+        text << in.rdbuf();
+        std::string content = text.str();
+        for (char &c : content)
+          c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        for (const std::string bad : {"nan", "inf"})
+          for (std::size_t at = content.find(bad); at != std::string::npos;
+               at             = content.find(bad, at + 1))
+            {
+                          // A number, not a word such as "information" or "snan...".
+              const bool before
+                = at == 0
+                  || !std::isalpha(static_cast<unsigned char>(content[at - 1]));
+              const bool after
+                = at + 3 >= content.size()
+                  || !std::isalpha(static_cast<unsigned char>(content[at + 3]));
+              if (before && after)
+                return false;
+            }
+      }
+    return true;
+  }
 } // namespace
 
 
@@ -101,7 +146,7 @@ main()
 {
   std::mt19937 random(20261121);
   unsigned int valid = 0, rejected = 0, bad = 0;
-  for (unsigned int k = 0; k < 60; ++k)
+  for (unsigned int k = 0; k < n_mutations; ++k)
     {
       const std::vector<std::string> mutated = mutate(random);
 
@@ -110,15 +155,15 @@ main()
       {
         std::ofstream out(name);
         for (const auto &line : mutated)
-          out << line << '\n';
+          out << (line == "include SELF" ? "include " + name : line) << '\n';
       }
       std::filesystem::remove_all(dir);
       const coaxfit_test::RunResult r    = coaxfit_test::run_coaxfit(dir, name);
       const int                     code = r.exit_code;
       const unsigned int            n_lines = r.lines;
       const std::string            &message = r.message;
-      const bool                    ran     = (code == 0 || code == 2)
-                       && std::filesystem::exists(dir + "/summary.json");
+      const bool                    ran
+        = (code == 0 || code == 2) && summary_is_valid(dir) && all_finite(dir);
       const bool clean_error = code == 1 && n_lines == 1
                                && message.rfind("coaxfit: error: ", 0) == 0
                                && !std::filesystem::exists(dir);
@@ -133,7 +178,8 @@ main()
                     << n_lines << " line(s): " << message << std::endl;
         }
     }
-  std::cout << "60 mutations: " << valid << " valid runs, " << rejected
-            << " clean rejections, " << bad << " crashes, hangs or unclear "
+  std::cout << n_mutations << " mutations: " << valid << " valid runs, "
+            << rejected << " clean rejections, " << bad
+            << " crashes, hangs or unclear "
             << "errors" << std::endl;
 }

@@ -7,6 +7,9 @@
 #include <cstring>
 #include <iostream>
 #include <new>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -48,7 +51,66 @@ namespace
     if (!std::cout)
       throw coaxfit::ResourceError("cannot write to standard output");
   }
+
+
+
+  /** What the command line asks for. */
+  struct CommandLine
+  {
+    enum class Action
+    {
+      run,
+      help,
+      print_parameters
+    } action
+      = Action::run;
+    std::vector<std::pair<std::string, std::string>> overrides;
+    std::string                                      filename;
+    bool                                             quiet = false;
+  };
+
+  /** Parse the arguments; throws InputError on a malformed command line. */
+  CommandLine
+  parse_command_line(int argc, char **argv)
+  {
+    using coaxfit::InputError;
+    CommandLine line;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          line.action = CommandLine::Action::help;
+        else if (arg == "--print-parameters")
+          line.action = CommandLine::Action::print_parameters;
+        else if (arg == "--quiet" || arg == "-q")
+          line.quiet = true;
+        else if (arg == "--set")
+          {
+            if (i + 1 >= argc)
+              throw InputError("--set needs an argument Section/Name=value");
+            const std::string setting = argv[++i];
+            const auto        eq      = setting.find('=');
+            if (eq == std::string::npos)
+              throw InputError("--set " + setting
+                               + ": expected Section/Name=value");
+            line.overrides.emplace_back(setting.substr(0, eq),
+                                        setting.substr(eq + 1));
+          }
+        else if (arg.size() > 1 && arg[0] == '-')
+          throw InputError("unknown option '" + arg + "' (see coaxfit --help)");
+        else if (line.filename.empty())
+          line.filename = arg;
+        else
+          throw InputError("more than one parameter file given ('"
+                           + line.filename + "' and '" + arg + "')");
+      }
+    if (line.action == CommandLine::Action::run && line.filename.empty())
+      throw InputError("no parameter file given (see coaxfit --help)");
+    return line;
+  }
 } // namespace
+
+
 
 /**
  * The program; main() ends the process with its exit code without running
@@ -63,60 +125,28 @@ coaxfit_main(int argc, char **argv)
   try
     {
       Interruption::install();
-      std::vector<std::pair<std::string, std::string>> overrides;
-      std::string                                      filename;
-      bool                                             quiet = false;
-      for (int i = 1; i < argc; ++i)
+      const CommandLine line = parse_command_line(argc, argv);
+      if (line.action == CommandLine::Action::help)
+        std::cout << usage;
+      else if (line.action == CommandLine::Action::print_parameters)
+        try
+          {
+            print_parameters(std::cout);
+          }
+        catch (const std::exception &) // deal.II's ExcIO
+          {
+            std::cout.setstate(std::ios::badbit);
+          }
+      if (line.action != CommandLine::Action::run)
         {
-          const std::string arg = argv[i];
-          if (arg == "--help" || arg == "-h")
-            {
-              std::cout << usage;
-              check_standard_output();
-              return 0;
-            }
-          else if (arg == "--print-parameters")
-            {
-              try
-                {
-                  print_parameters(std::cout);
-                }
-              catch (const std::exception &) // deal.II's ExcIO
-                {
-                  std::cout.setstate(std::ios::badbit);
-                }
-              check_standard_output();
-              return 0;
-            }
-          else if (arg == "--quiet" || arg == "-q")
-            quiet = true;
-          else if (arg == "--set")
-            {
-              if (i + 1 >= argc)
-                throw InputError("--set needs an argument Section/Name=value");
-              const std::string setting = argv[++i];
-              const auto        eq      = setting.find('=');
-              if (eq == std::string::npos)
-                throw InputError("--set " + setting
-                                 + ": expected Section/Name=value");
-              overrides.emplace_back(setting.substr(0, eq),
-                                     setting.substr(eq + 1));
-            }
-          else if (arg.size() > 1 && arg[0] == '-')
-            throw InputError("unknown option '" + arg
-                             + "' (see coaxfit --help)");
-          else if (filename.empty())
-            filename = arg;
-          else
-            throw InputError("more than one parameter file given ('" + filename
-                             + "' and '" + arg + "')");
+          check_standard_output();
+          return 0;
         }
-      if (filename.empty())
-        throw InputError("no parameter file given (see coaxfit --help)");
 
-      const Parameters parameters = read_parameters(filename, overrides);
-      CoaxialFit       fit(parameters, std::cout, !quiet);
-      const bool       converged = fit.run();
+      const Parameters parameters
+        = read_parameters(line.filename, line.overrides);
+      CoaxialFit fit(parameters, std::cout, !line.quiet);
+      const bool converged = fit.run();
       check_standard_output();
       return converged ? 0 : 2;
     }

@@ -66,6 +66,21 @@ namespace
 
 
 
+  /**
+   * Shell text that runs the command before it in the background, waits
+   * until it has started its work (its staging directory for "results"
+   * exists: signal handlers installed, memory and directory checked), then
+   * @p seconds more, and sends it SIG@p name; exits with its exit code.
+   */
+  std::string
+  signal_after(const double seconds, const std::string &name)
+  {
+    return " & p=$!; for i in $(seq 3000); do [ -d .results.partial-$p ] "
+           "&& break; sleep 0.02; done; sleep "
+           + std::to_string(seconds) + "; kill -" + name
+           + " $p; wait $p; exit $?; :";
+  }
+
   /** The first words of a message: what it says, without paths. */
   std::string
   gist(const std::string &message, const std::size_t words)
@@ -136,19 +151,16 @@ main()
         dir,
         5);
   const std::string slow = "--set Mesh/Global\\ refinements=3 " + case_file;
-  fault("SIGTERM after 1.0 s",
+  fault("SIGTERM once the run has started",
         "",
-        slow + " & sleep 1.0; kill -TERM $!; wait $!; exit $?; :",
+        slow + signal_after(0., "TERM"),
         dir,
         9);
-  fault("SIGTERM after 2.0 s",
+  fault(
+    "SIGTERM 1 s after the start", "", slow + signal_after(1., "TERM"), dir, 9);
+  fault("SIGINT 0.5 s after the start",
         "",
-        slow + " & sleep 2.0; kill -TERM $!; wait $!; exit $?; :",
-        dir,
-        9);
-  fault("SIGINT after 1.5 s",
-        "",
-        slow + " & sleep 1.5; kill -INT $!; wait $!; exit $?; :",
+        slow + signal_after(0.5, "INT"),
         dir,
         9);
   fs::remove_all("foreign");

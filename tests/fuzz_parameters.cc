@@ -6,7 +6,9 @@
 // or 2 with a summary.json that parses and no NaN or infinity in any
 // output file) or with a clean one-line "coaxfit: error:" message and exit
 // 1 and no output directory: never a crash (signal, exit 3), a hang or a
-// multi-line error.
+// multi-line error. Release only (fuzz_parameters.release.output): the 80
+// runs are mostly process start-up, and the paths they reach run in Debug
+// in bad_input.
 
 #include "run_executable.h"
 

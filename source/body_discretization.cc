@@ -10,14 +10,12 @@
 
 #include <coaxfit/axisymmetric.h>
 #include <coaxfit/body_discretization.h>
-#include <coaxfit/input_error.h>
 #include <coaxfit/stress_postprocessor.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <map>
+#include <stdexcept>
 
 namespace coaxfit
 {
@@ -298,12 +296,12 @@ namespace coaxfit
 
   void
   BodyDiscretization::output_results(const Vector<double> &solution,
-                                     const std::string    &filename) const
+                                     std::ostream         &out) const
   {
     for (const double value : solution)
       if (!std::isfinite(value))
-        throw std::runtime_error("the displacement to be written to '"
-                                 + filename + "' is not finite");
+        throw std::runtime_error("the displacement to be written is not "
+                                 "finite");
     DoFHandler<2>  dof_handler_out(triangulation);
     Vector<double> field;
     if (reduced_volumetric_integration)
@@ -334,20 +332,6 @@ namespace coaxfit
     data_out.add_data_vector(data, postprocessor);
     data_out.build_patches(fe.degree);
 
-    std::ofstream out(filename);
-    try
-      {
-        data_out.write_vtu(out);
-        out.close();
-      }
-    catch (const ExceptionBase &) // deal.II's ExcIO on a failed stream
-      {
-        out.setstate(std::ios::badbit);
-      }
-    if (!out)
-      throw ResourceError("writing '"
-                          + std::filesystem::path(filename).filename().string()
-                          + "' failed: disk full, quota or file size limit "
-                            "reached (the earlier results are untouched)");
+    data_out.write_vtu(out);
   }
 } // namespace coaxfit

@@ -1,4 +1,8 @@
+#include <deal.II/base/exceptions.h>
+
 #include <coaxfit/result_writers.h>
+
+#include <fstream>
 
 namespace coaxfit
 {
@@ -14,8 +18,18 @@ namespace coaxfit
   {
     const std::string         name = file_names()[0];
     const BodyDiscretization &body = shaft ? results.shaft : results.hub;
-    body.output_results(shaft ? results.shaft_field : results.hub_field,
-                        directory + "/" + name);
+    const std::string         file = directory + "/" + name;
+    std::ofstream             out  = open_result_file(file);
+    try
+      {
+        body.output_results(shaft ? results.shaft_field : results.hub_field,
+                            out);
+      }
+    catch (const ExceptionBase &) // deal.II's ExcIO on a failed stream
+      {
+        out.setstate(std::ios::badbit);
+      }
+    close_result_file(out, file);
     return name + ": displacement and stresses on "
            + std::to_string(body.n_cells()) + " cells";
   }

@@ -97,17 +97,7 @@ namespace
   summary_is_valid(const std::string &directory)
   {
     std::ifstream in(directory + "/summary.json");
-    if (!in)
-      return false;
-    try
-      {
-        (void)nlohmann::json::parse(in);
-        return true;
-      }
-    catch (const std::exception &)
-      {
-        return false;
-      }
+    return in && nlohmann::json::accept(in);
   }
 
   /** No output file holds a NaN or an infinity as a number. */

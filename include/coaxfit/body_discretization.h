@@ -12,6 +12,7 @@
 #include <coaxfit/mesh.h>
 #include <coaxfit/parameters.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -59,11 +60,11 @@ namespace coaxfit
     /**
      * Write @p solution as VTU: displacement (mm), the stresses sigma_rr,
      * sigma_zz, sigma_tt (hoop), sigma_rz and von Mises (MPa), and with
-     * reduced integration the volumetric stress.
+     * reduced integration the volumetric stress, to @p out (the caller owns
+     * the file and checks that it was written).
      */
     void
-    output_results(const Vector<double> &solution,
-                   const std::string    &filename) const;
+    output_results(const Vector<double> &solution, std::ostream &out) const;
 
     /**
      * The interface values of a field @p solution solved for the data

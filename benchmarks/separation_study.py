@@ -26,8 +26,10 @@ for k in range(finest + 1):
 
 
 def geometry(beta1):
-    return ["Geometry/R0=%.6g" % (100 * beta1), "Geometry/R2=200", "Geometry/L1=300",
-            "Geometry/L2=200", "Geometry/d=0.5", "Coupling/Max steps=2000"]
+    return ["Geometry/Shaft bore diameter=%.6g" % (200 * beta1),
+            "Geometry/Hub outer diameter=400", "Geometry/Shaft length=600",
+            "Geometry/Hub length=400", "Fit/Diametral interference=1",
+            "Coupling/Max steps=2000"]
 
 
 def min_away_from_corner(profile_dir):

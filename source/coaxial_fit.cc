@@ -3,6 +3,7 @@
 #include <coaxfit/blas_threads.h>
 #include <coaxfit/coaxial_fit.h>
 #include <coaxfit/concurrency.h>
+#include <coaxfit/design_report.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/monolithic_solver.h>
 #include <coaxfit/resources.h>
@@ -286,10 +287,19 @@ namespace coaxfit
   void
   CoaxialFit::output_results(const std::string &directory)
   {
-    const PressureSummary          pressure = pressure_summary();
-    const Complementarity          complementarity(*interface, *coupling);
-    const std::vector<std::string> warning_list = warnings(pressure);
+    const PressureSummary pressure = pressure_summary();
+    const Complementarity complementarity(*interface, *coupling);
+    design = std::make_unique<FitDesign>(parameters,
+                                         *shaft,
+                                         shaft_field,
+                                         *hub,
+                                         hub_field,
+                                         coupling->contact_force());
+    std::vector<std::string> warning_list = parameters.input_warnings();
+    for (const auto &list : {warnings(pressure), design->warnings(parameters)})
+      warning_list.insert(warning_list.end(), list.begin(), list.end());
     print_report(pressure, complementarity, warning_list);
+    print_design(out, parameters, *design);
 
     std::map<std::string, double> timing;
     const RunResults              results{parameters,
@@ -301,6 +311,7 @@ namespace coaxfit
                              *coupling,
                              pressure,
                              complementarity,
+                             *design,
                              timing,
                              warning_list};
     std::vector<std::string>      lines;
@@ -342,6 +353,17 @@ namespace coaxfit
     check_memory(parameters);
     ResultDirectory directory(parameters.output_directory(),
                               all_result_file_names());
+    const bool      converged = run_in(directory.staging_path());
+    directory.commit();
+    pcout << "  results in " << parameters.output_directory() << '\n';
+    return converged;
+  }
+
+
+
+  bool
+  CoaxialFit::run_in(const std::string &directory)
+  {
     setup_system();
     pcout << "coaxfit: case " << parameters.case_name << '\n'
           << "  shaft: " << shaft->n_cells() << " cells, " << shaft->n_dofs()
@@ -349,9 +371,7 @@ namespace coaxfit
           << " DoFs;  " << interface->n_points() << " interface points, FE_Q("
           << parameters.mesh.degree << ")\n";
     const bool converged = solve(pcout.is_active() ? &out : nullptr);
-    output_results(directory.staging_path());
-    directory.commit();
-    pcout << "  results in " << parameters.output_directory() << '\n';
+    output_results(directory);
     return converged;
   }
 } // namespace coaxfit

@@ -1,4 +1,5 @@
 #include <coaxfit/coaxial_fit.h>
+#include <coaxfit/fit_case_study.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/interruption.h>
 #include <coaxfit/parameters.h>
@@ -145,8 +146,11 @@ coaxfit_main(int argc, char **argv)
 
       const Parameters parameters
         = read_parameters(line.filename, line.overrides);
-      CoaxialFit fit(parameters, std::cout, !line.quiet);
-      const bool converged = fit.run();
+      bool converged = false;
+      if (parameters.fit.fit_case == FitCase::all)
+        converged = FitCaseStudy(parameters, std::cout, !line.quiet).run();
+      else
+        converged = CoaxialFit(parameters, std::cout, !line.quiet).run();
       check_standard_output();
       return converged ? 0 : 2;
     }

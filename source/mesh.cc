@@ -64,7 +64,7 @@ namespace coaxfit
             "parameter Mesh/Grading ratio = " + number(ratio)
             + ": the longer body needs more than 100000 cells beyond the "
               "end of contact; use a larger Mesh/Grading ratio or "
-              "proportions of Geometry/L1 and L2 closer to each other");
+              "Geometry/Shaft length and Hub length closer to each other");
         sum += size;
         size *= ratio;
         ++n;

@@ -1,9 +1,12 @@
 #include <deal.II/base/exceptions.h>
 
 #include <coaxfit/input_error.h>
+#include <coaxfit/material_library.h>
+#include <coaxfit/parameter_checks.h>
 #include <coaxfit/parameter_file.h>
 #include <coaxfit/parameters.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -124,31 +127,6 @@ namespace coaxfit
       });
     }
 
-    void
-    require(const bool         condition,
-            const std::string &name,
-            const double       value,
-            const std::string &range)
-    {
-      if (!condition)
-        {
-          std::ostringstream msg;
-          msg.precision(15);
-          msg << "parameter " << name << " = " << value
-              << " is out of range: allowed is " << range << '.';
-          throw InputError(msg.str());
-        }
-    }
-
-    std::string
-    number(const double x)
-    {
-      std::ostringstream s;
-      s.precision(10);
-      s << x;
-      return s.str();
-    }
-
     std::string
     base_name(const std::string &filename)
     {
@@ -255,64 +233,6 @@ namespace coaxfit
 
 
   void
-  GeometryParameters::declare_parameters(ParameterHandler &prm)
-  {
-    const Patterns::Double non_negative(0.);
-    const bool             required = true;
-    prm.enter_subsection("Geometry");
-    prm.add_parameter("R0",
-                      R0,
-                      "Inner radius of the shaft D1 in mm; 0 for a solid "
-                      "shaft. Required. Allowed: 0 <= R0 < R1, a wall "
-                      "R1 - R0 of at least 1e-3 R1.",
-                      non_negative,
-                      required);
-    prm.add_parameter("R1",
-                      R1,
-                      "Nominal contact radius in mm: outer radius of the "
-                      "shaft and bore of the hub; both bodies are meshed "
-                      "at this radius (small strain). Required. Allowed: "
-                      "R0 < R1 < R2.",
-                      non_negative,
-                      required);
-    prm.add_parameter("R2",
-                      R2,
-                      "Outer radius of the hub D2 in mm. Required. Allowed: "
-                      "1.001 R1 <= R2 <= 1e4 R1 (a wall of at least 1e-3 "
-                      "R1).",
-                      non_negative,
-                      required);
-    prm.add_parameter("L1",
-                      L1,
-                      "HALF length of the shaft in mm, measured from the "
-                      "common mid-plane z = 0 (the shaft is 2 L1 long), as "
-                      "in the paper's table (l1 = L1/R1). Required. "
-                      "Allowed: 1e-4 R1 <= L1 <= 1e4 R1.",
-                      non_negative,
-                      required);
-    prm.add_parameter("L2",
-                      L2,
-                      "HALF length of the hub in mm, measured from the "
-                      "common mid-plane z = 0 (the hub is 2 L2 long). The "
-                      "contact surface is r = R1, 0 <= z <= min(L1, L2). "
-                      "Required. Allowed: 1e-4 R1 <= L2 <= 1e4 R1.",
-                      non_negative,
-                      required);
-    prm.add_parameter("d",
-                      d,
-                      "Radial interference in mm: the shaft's radius "
-                      "exceeds the bore's by d. The model is linear (small "
-                      "strain, both bodies meshed at R1), so d/R1 should "
-                      "stay well below 0.01. Required. Allowed: "
-                      "1e-9 R1 <= d <= 0.1 R1.",
-                      non_negative,
-                      required);
-    prm.leave_subsection();
-  }
-
-
-
-  void
   GeometryParameters::validate() const
   {
     require(R1 > R0,
@@ -355,20 +275,52 @@ namespace coaxfit
                                const std::string &body_label)
   {
     const bool required = true;
+    prm.add_parameter("Name",
+                      name,
+                      "Material of the " + body_label
+                        + " from the library: " + material_names(", ")
+                        + " (doc/materials.md lists the values and their "
+                          "sources), or custom. A name fills E, nu, Yield "
+                          "strength, Density and Thermal expansion; entries "
+                          "given in the file override it.",
+                      Patterns::Selection(material_names("|") + "|custom"));
     prm.add_parameter("E",
                       E,
                       "Young's modulus of the " + body_label
-                        + " in MPa. Required. Allowed: 1e-6 to 1e9 (foams "
-                          "to diamond are 1e-2 to 1.2e6).",
+                        + " in MPa. Required unless Name gives it. Allowed: "
+                          "1e-6 to 1e9 (foams to diamond are 1e-2 to "
+                          "1.2e6).",
                       Patterns::Double(1e-6, 1e9),
                       required);
     prm.add_parameter("nu",
                       nu,
                       "Poisson's ratio of the " + body_label
-                        + " (dimensionless). Required. Allowed: "
-                          "-1 < nu < 0.5.",
+                        + " (dimensionless). Required unless Name gives it. "
+                          "Allowed: -1 < nu < 0.5.",
                       Patterns::Double(-1., 0.5),
                       required);
+    prm.add_parameter("Yield strength",
+                      yield_strength,
+                      "Yield strength R_e (or R_p0.2) of the " + body_label
+                        + " in MPa, for the safety against yield. 0: "
+                          "unknown (from Name if given; no yield check "
+                          "otherwise). Allowed: 0 to 1e5.",
+                      Patterns::Double(0., 1e5));
+    prm.add_parameter("Density",
+                      density,
+                      "Density of the " + body_label
+                        + " in kg/m^3 (reported; for loads of operation). "
+                          "0: unknown (from Name if given). Allowed: 0 to "
+                          "1e5.",
+                      Patterns::Double(0., 1e5));
+    prm.add_parameter("Thermal expansion",
+                      thermal_expansion,
+                      "Linear thermal expansion coefficient of the "
+                        + body_label
+                        + " in 1/K (reported; for loads of operation). 0: "
+                          "unknown (from Name if given). Allowed: 0 to "
+                          "1e-3.",
+                      Patterns::Double(0., 1e-3));
   }
 
 
@@ -710,6 +662,15 @@ namespace coaxfit
                       "Write one VTU file per body for the final state, "
                       "interface.vtp and a .pvd grouping them (for "
                       "ParaView).");
+    prm.add_parameter("Write plots",
+                      write_plots,
+                      "Draw contact_pressure.png, surface_stresses.png and "
+                      "convergence.png with gnuplot (skipped with a note "
+                      "when gnuplot is not installed).");
+    prm.add_parameter("Write report",
+                      write_report,
+                      "Write report.md: inputs, the design table (FE next "
+                      "to DIN 7190), warnings and plots.");
     prm.add_parameter("Print timing",
                       print_timing,
                       "Print the wall times of the phases at the end of "
@@ -723,7 +684,8 @@ namespace coaxfit
   void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
-    geometry.declare_parameters(prm);
+    drawing.declare_parameters(prm);
+    fit.declare_parameters(prm);
     prm.enter_subsection("Material");
     for (const auto &[name, material, label] :
          {std::tuple<std::string, Material *, std::string>{"Shaft",
@@ -736,6 +698,7 @@ namespace coaxfit
         prm.leave_subsection();
       }
     prm.leave_subsection();
+    design.declare_parameters(prm);
     mesh.declare_parameters(prm);
     solver.declare_parameters(prm);
     coupling.declare_parameters(prm);
@@ -770,6 +733,58 @@ namespace coaxfit
     hub.validate("Material/Hub");
     coupling.validate();
     contact.validate();
+  }
+
+
+
+  void
+  Parameters::derive_model()
+  {
+    geometry.R0 = 0.5 * drawing.shaft_bore_diameter;
+    geometry.R1 = 0.5 * drawing.joint_diameter;
+    geometry.R2 = 0.5 * drawing.hub_outer_diameter;
+    geometry.L1 = 0.5 * drawing.shaft_length;
+    geometry.L2 = 0.5 * drawing.hub_length;
+    geometry.d  = 0.5 * fit_limits.effective();
+  }
+
+
+
+  Parameters
+  Parameters::for_fit_case(const FitCase c) const
+  {
+    Assert(c != FitCase::all, ExcInternalError());
+    Parameters p          = *this;
+    p.fit_limits.fit_case = c;
+    p.geometry.d          = 0.5 * p.fit_limits.effective();
+    if (fit.fit_case == FitCase::all)
+      {
+        p.output.directory = output_directory() + "/" + to_string(c);
+        p.case_name        = case_name + "_" + to_string(c);
+      }
+    return p;
+  }
+
+
+
+  std::vector<std::string>
+  Parameters::input_warnings() const
+  {
+    std::vector<std::string> list = read_notes;
+    const double             U_w  = 2. * geometry.d;
+    const double             D_F  = 2. * geometry.R1;
+    if (U_w > 3e-3 * D_F)
+      list.push_back("the effective interference " + number(U_w) + " mm is "
+                     + number(100. * U_w / D_F)
+                     + " % of the joint diameter (above 0.3 %: a unit slip, "
+                       "or beyond the elastic range of most metals)");
+    const double ratio = std::max(shaft.E / hub.E, hub.E / shaft.E);
+    if (ratio > 1e3)
+      list.push_back("Young's moduli of shaft (" + number(shaft.E)
+                     + " MPa) and hub (" + number(hub.E)
+                     + " MPa) differ by a factor " + number(ratio)
+                     + " (a unit slip, GPa for MPa?)");
+    return list;
   }
 
 
@@ -832,13 +847,32 @@ namespace coaxfit
       set_entry(prm, path, value);
 
     // The scene has no silent defaults: name every entry that is missing.
-    const std::set<std::string> missing = prm.get_entries_wrongly_not_set();
+    // deal.II joins the path with '.' and writes other characters than
+    // letters and digits as _XX (hexadecimal): back to the names of the file.
+    std::set<std::string> missing;
+    for (const std::string &mangled : prm.get_entries_wrongly_not_set())
+      {
+        std::string entry;
+        for (std::size_t i = 0; i < mangled.size(); ++i)
+          if (mangled[i] == '_' && i + 2 < mangled.size()
+              && std::isxdigit(static_cast<unsigned char>(mangled[i + 1]))
+              && std::isxdigit(static_cast<unsigned char>(mangled[i + 2])))
+            {
+              entry += static_cast<char>(
+                std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
+              i += 2;
+            }
+          else
+            entry += mangled[i];
+        missing.insert(entry);
+      }
+    complete_scene(parameters, missing);
     if (!missing.empty())
       {
         std::string list;
         for (std::string entry : missing)
           {
-            // deal.II joins the path with '.'; the prm syntax uses '/'.
+            // The prm syntax joins the path with '/'.
             for (char &c : entry)
               if (c == '.')
                 c = '/';
@@ -848,7 +882,8 @@ namespace coaxfit
                          + "' does not give the scene entries " + list
                          + " (the geometry, interference and materials have "
                            "no defaults: set them in the file or with "
-                           "--set)");
+                           "--set; a Material Name gives E and nu, a Fit/ISO "
+                           "fit the interference)");
       }
 
     parameters.case_name = base_name(filename);

@@ -185,8 +185,8 @@ namespace coaxfit
   {
     if (committed || staging.empty())
       throw std::logic_error("ResultDirectory::commit() called twice");
-    for (const auto &entry : fs::directory_iterator(staging))
-      sync_path(entry.path().string(), false);
+    for (const auto &entry : fs::recursive_directory_iterator(staging))
+      sync_path(entry.path().string(), entry.is_directory());
     sync_path(staging, true);
 
     std::lock_guard<std::mutex> lock(Interruption::mutex());

@@ -1,3 +1,4 @@
+#include <coaxfit/fit_case_study.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/result_writers.h>
 
@@ -40,6 +41,7 @@ namespace coaxfit
     writers.push_back(std::make_unique<ContactPressureWriter>());
     writers.push_back(std::make_unique<ConvergenceWriter>());
     writers.push_back(std::make_unique<ParametersWriter>());
+    writers.push_back(std::make_unique<SurfaceStressWriter>());
     if (output.write_vtu)
       {
         writers.push_back(std::make_unique<BodyVtuWriter>(true));
@@ -47,6 +49,10 @@ namespace coaxfit
         writers.push_back(std::make_unique<InterfaceVtpWriter>());
         writers.push_back(std::make_unique<PvdWriter>());
       }
+    if (output.write_plots)
+      writers.push_back(std::make_unique<PlotWriter>());
+    if (output.write_report) // last: it shows the plots that exist
+      writers.push_back(std::make_unique<ReportWriter>());
     return writers;
   }
 
@@ -55,12 +61,17 @@ namespace coaxfit
   all_result_file_names()
   {
     OutputParameters everything;
-    everything.write_vtu = true;
+    everything.write_vtu    = true;
+    everything.write_plots  = true;
+    everything.write_report = true;
     std::set<std::string> names;
     for (const auto &writer : make_result_writers(everything))
       for (const std::string &name : writer->file_names())
         names.insert(name);
     for (const std::string &name : SummaryWriter().file_names())
+      names.insert(name);
+    // A Fit/Case = all study may have written the directory before.
+    for (const std::string &name : FitCaseStudy::file_names())
       names.insert(name);
     return names;
   }

@@ -15,16 +15,53 @@ namespace coaxfit
       const Parameters &p = results.parameters;
       const auto       &g = p.geometry;
       Json              j;
-      j["geometry"] = {{"R0", g.R0},
-                       {"R1", g.R1},
-                       {"R2", g.R2},
-                       {"L1", g.L1},
-                       {"L2", g.L2},
-                       {"d", g.d},
-                       {"contact_length", g.contact_length()},
-                       {"units", "mm, L1 and L2 are half lengths"}};
-      j["material"] = {{"shaft", {{"E", p.shaft.E}, {"nu", p.shaft.nu}}},
-                       {"hub", {{"E", p.hub.E}, {"nu", p.hub.nu}}}};
+      j["geometry"] = {
+        {"R0", g.R0},
+        {"R1", g.R1},
+        {"R2", g.R2},
+        {"L1", g.L1},
+        {"L2", g.L2},
+        {"d", g.d},
+        {"contact_length", g.contact_length()},
+        {"units",
+         "mm; R0, R1, R2 radii, L1, L2 half lengths, d radial effective interference of the model"}};
+      j["geometry"].update({{"joint_diameter", 2. * g.R1},
+                            {"shaft_bore_diameter", 2. * g.R0},
+                            {"hub_outer_diameter", 2. * g.R2},
+                            {"hub_length", 2. * g.L2},
+                            {"shaft_length", 2. * g.L1},
+                            {"joint_length", 2. * g.contact_length()}});
+      j["paper"]         = {{"beta1", g.R0 / g.R1},
+                            {"beta2", g.R2 / g.R1},
+                            {"l1", g.L1 / g.R1},
+                            {"l2", g.L2 / g.R1},
+                            {"delta", g.d / g.R1}};
+      const FitLimits &f = p.fit_limits;
+      j["fit"]           = {{"source", f.source},
+                            {"iso_fit", f.iso_fit},
+                            {"case", to_string(f.fit_case)},
+                            {"U_min", f.U_min},
+                            {"U_max", f.U_max},
+                            {"U_used", f.used()},
+                            {"smoothing_loss", f.smoothing_loss},
+                            {"U_effective", 2. * g.d},
+                            {"deviations_mm",
+                             {{"hole_upper", f.hole_upper},
+                              {"hole_lower", f.hole_lower},
+                              {"shaft_upper", f.shaft_upper},
+                              {"shaft_lower", f.shaft_lower}}},
+                            {"units", "mm, diametral"}};
+      Json materials;
+      for (const auto &[name, m] :
+           {std::pair<std::string, const Material *>{"shaft", &p.shaft},
+            {"hub", &p.hub}})
+        materials[name] = {{"name", m->name},
+                           {"E", m->E},
+                           {"nu", m->nu},
+                           {"yield_strength", m->yield_strength},
+                           {"density", m->density},
+                           {"thermal_expansion", m->thermal_expansion}};
+      j["material"] = materials;
       j["mesh"]
         = {{"degree", p.mesh.degree},
            {"global_refinements", p.mesh.global_refinements},
@@ -88,6 +125,53 @@ namespace coaxfit
                      {"solves", statistics.solves}};
       return j;
     }
+
+    Json
+    design(const RunResults &results)
+    {
+      const FitDesign &d = results.design;
+      Json             checks, maxima;
+      for (const FitDesign::CheckPoint &c : d.check_points)
+        checks[c.name] = {{"fe",
+                           {{"radial", c.fe.radial()},
+                            {"hoop", c.fe.hoop()},
+                            {"axial", c.fe.sigma[1]},
+                            {"shear_rz", c.fe.sigma[3]},
+                            {"von_mises", c.fe.von_mises()}}},
+                          {"din",
+                           {{"radial", c.din.radial},
+                            {"hoop", c.din.hoop},
+                            {"equivalent", c.din.equivalent()}}}};
+      for (const FitDesign::SurfaceMaximum &m : d.surface_maxima)
+        maxima[m.name] = {{"von_mises", m.von_mises},
+                          {"z", m.z},
+                          {"at_joint_end_singular", m.corner}};
+      const DesignParameters &p = results.parameters.design;
+      return {{"units", "MPa, N, N m, mm"},
+              {"friction_coefficient", p.friction_coefficient},
+              {"press_in_friction_coefficient",
+               p.press_in_friction_coefficient},
+              {"required_torque", p.required_torque},
+              {"required_axial_force", p.required_axial_force},
+              {"normal_force", d.normal_force},
+              {"pressure_mean_fe", d.mean_pressure},
+              {"pressure_din", d.pressure_din},
+              {"torque_capacity", d.torque_capacity},
+              {"torque_capacity_din", d.torque_capacity_din},
+              {"axial_force_capacity", d.axial_force_capacity},
+              {"axial_force_capacity_din", d.axial_force_capacity_din},
+              {"press_in_force", d.press_in_force},
+              {"press_in_force_din", d.press_in_force_din},
+              {"safety_slip", d.safety_slip},
+              {"safety_slip_din", d.safety_slip_din},
+              {"safety_yield_shaft", d.safety_yield_shaft},
+              {"safety_yield_shaft_din", d.safety_yield_shaft_din},
+              {"safety_yield_hub", d.safety_yield_hub},
+              {"safety_yield_hub_din", d.safety_yield_hub_din},
+              {"edge_distance", d.edge_distance},
+              {"check_points_mid_plane", checks},
+              {"surface_maxima", maxima}};
+    }
   } // namespace
 
 
@@ -115,6 +199,7 @@ namespace coaxfit
                      {"lame", ps.lame},
                      {"tensile", ps.min < 0.}};
     j["contact"]  = contact(results);
+    j["design"]   = design(results);
     j["active_set"]
       = {{"changes", results.solver.get_active_set().n_changes()}};
     j["complementarity"]

@@ -19,12 +19,14 @@
 namespace
 {
   const std::string valid = "subsection Geometry\n"
-                            "  set R0 = 0\n"
-                            "  set R1 = 100\n"
-                            "  set R2 = 200\n"
-                            "  set L1 = 200\n"
-                            "  set L2 = 100\n"
-                            "  set d = 0.25\n"
+                            "  set Joint diameter = 200\n"
+                            "  set Shaft bore diameter = 0\n"
+                            "  set Hub outer diameter = 400\n"
+                            "  set Shaft length = 400\n"
+                            "  set Hub length = 200\n"
+                            "end\n"
+                            "subsection Fit\n"
+                            "  set Diametral interference = 0.5\n"
                             "end\n"
                             "subsection Material\n"
                             "  subsection Shaft\n"
@@ -65,17 +67,27 @@ namespace
   {
     return file_with(label, "subsection Geometry\n  set " + entry + "\nend\n");
   }
+
+  std::string
+  fit(const std::string &label, const std::string &entries)
+  {
+    return file_with(label, "subsection Fit\n" + entries + "end\n");
+  }
 } // namespace
 
 int
 main()
 {
-  run("R0_not_below_R1", geometry("R0_not_below_R1", "R0 = 100"));
-  run("R1_not_below_R2", geometry("R1_not_below_R2", "R2 = 90"));
-  run("d_zero", geometry("d_zero", "d = 0"));
-  run("L1_negative", geometry("L1_negative", "L1 = -5"));
-  run("d_nan", geometry("d_nan", "d = nan"));
-  run("malformed_number", geometry("malformed_number", "R2 = 2e5x"));
+  run("bore_not_below_joint",
+      geometry("bore_not_below_joint", "Shaft bore diameter = 200"));
+  run("hub_not_above_joint",
+      geometry("hub_not_above_joint", "Hub outer diameter = 180"));
+  run("U_zero", fit("U_zero", "  set Diametral interference = 0\n"));
+  run("shaft_length_negative",
+      geometry("shaft_length_negative", "Shaft length = -5"));
+  run("U_nan", fit("U_nan", "  set Diametral interference = nan\n"));
+  run("malformed_number",
+      geometry("malformed_number", "Hub outer diameter = 2e5x"));
   run("nu_half",
       file_with("nu_half",
                 "subsection Material\n subsection Hub\n  set nu = 0.5\n "
@@ -89,7 +101,7 @@ main()
   run("unknown_entry", geometry("unknown_entry", "R3 = 5"));
   run("unknown_section",
       file_with("unknown_section",
-                "subsection Geometrie\n  set R1 = 5\nend\n"));
+                "subsection Geometrie\n  set Joint diameter = 5\nend\n"));
   run("unknown_controller",
       file_with("unknown_controller",
                 "subsection Coupling\n  set Alpha controller = magic\nend\n"));
@@ -106,11 +118,12 @@ main()
   run("missing_file", "no_such_file.prm");
   // The scene has no silent defaults: every missing entry is named.
   std::ofstream("scene_incomplete.prm")
-    << "subsection Geometry\n  set R1 = 20\n  set R2 = 40\nend\n";
+    << "subsection Geometry\n  set Joint diameter = 20\n  set Hub outer "
+       "diameter = 40\nend\n";
   run("scene_incomplete", "scene_incomplete.prm");
   std::filesystem::create_directories("a_directory.prm");
   run("unreadable_file", "a_directory.prm");
-  run("d_infinite", geometry("d_infinite", "d = inf"));
+  run("U_infinite", fit("U_infinite", "  set Diametral interference = inf\n"));
   run("diverging_alpha",
       "--set \"Coupling/Alpha controller=fixed\" --set Coupling/Alpha=0.2 "
         + std::string(COAXFIT_SOURCE_DIR) + "/prm/variant_05.prm");
@@ -120,9 +133,12 @@ main()
         + file_with("directory_not_creatable", ""));
 
   // Hostile input that once crashed, hung or ended with exit 2 or 3.
-  run("d_subnormal", geometry("d_subnormal", "d = 1e-320"));
-  run("shaft_wall_too_thin", geometry("shaft_wall_too_thin", "R0 = 99.9999"));
-  run("hub_wall_too_thin", geometry("hub_wall_too_thin", "R2 = 100.00000001"));
+  run("U_subnormal",
+      fit("U_subnormal", "  set Diametral interference = 1e-320\n"));
+  run("shaft_wall_too_thin",
+      geometry("shaft_wall_too_thin", "Shaft bore diameter = 199.9998"));
+  run("hub_wall_too_thin",
+      geometry("hub_wall_too_thin", "Hub outer diameter = 200.00000002"));
   run("E_huge",
       file_with("E_huge",
                 "subsection Material\n subsection Hub\n  set E = 1e300\n "
@@ -131,11 +147,35 @@ main()
       "--set \"Mesh/Axial cells=2200\" --set \"Mesh/Radial cells=1\" "
         + file_with("grading_overflow", ""));
   run("too_many_cells_beyond_contact",
-      "--set \"Mesh/Grading ratio=1\" --set Geometry/L1=1e6 "
+      "--set \"Mesh/Grading ratio=1\" --set \"Geometry/Shaft length=2e6\" "
         + file_with("too_many_cells_beyond_contact", ""));
   run("directory_name_too_long",
       "--set Output/Directory=" + std::string(300, 'x') + " "
         + file_with("directory_name_too_long", ""));
+  // The fit and the materials in the engineer's terms.
+  run("iso_fit_transition",
+      fit("iso_fit_transition", "  set ISO fit = H7/k6\n"));
+  run("iso_fit_shaft_basis",
+      fit("iso_fit_shaft_basis", "  set ISO fit = S7/h6\n"));
+  run("iso_fit_grade", fit("iso_fit_grade", "  set ISO fit = H7/s12\n"));
+  run("iso_fit_t_below_24",
+      "--set \"Geometry/Joint diameter=20\" --set \"Geometry/Hub outer "
+      "diameter=40\" "
+        + fit("iso_fit_t_below_24", "  set ISO fit = H7/t6\n"));
+  run("iso_fit_diameter",
+      "--set \"Geometry/Joint diameter=600\" --set \"Geometry/Hub outer "
+      "diameter=1200\" "
+        + fit("iso_fit_diameter", "  set ISO fit = H7/s6\n"));
+  run("iso_fit_smoothed_away",
+      fit("iso_fit_smoothed_away",
+          "  set ISO fit = H7/m6\n  set Case = min\n"
+          "  set Shaft roughness Rz = 10\n  set Hub roughness Rz = 10\n"));
+  run("case_without_iso_fit",
+      fit("case_without_iso_fit", "  set Case = max\n"));
+  run("material_unknown",
+      file_with("material_unknown",
+                "subsection Material\n subsection Hub\n  set Name = S235\n "
+                "end\nend\n"));
   std::ofstream("includes_itself.prm") << "include includes_itself.prm\n";
   run("include_cycle", "includes_itself.prm");
   std::ofstream("deep.json")

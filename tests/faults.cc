@@ -121,11 +121,12 @@ namespace
     const auto   files   = snapshot(directory);
     const auto   summary = nlohmann::json::parse(files.at("summary.json"));
     const auto   used    = nlohmann::json::parse(files.at("parameters.json"));
-    const double d       = summary["geometry"]["d"];
-    const double d_used  = std::stod(used["Geometry"]["d"].get<std::string>());
+    const double U       = summary["fit"]["U_used"];
+    const double U_used
+      = std::stod(used["Fit"]["Diametral interference"].get<std::string>());
     std::cout << label << ": " << files.size()
               << " files, summary.json agrees with parameters.json: "
-              << (d == d_used ? "yes" : "NO") << ", converged "
+              << (U == U_used ? "yes" : "NO") << ", converged "
               << summary["converged"]
               << ", staging directories left: " << n_staging_left() << '\n';
   }
@@ -181,7 +182,7 @@ main()
   r = run_shell("",
                 small + "--set Output/Directory=" + dir + " " + case_file
                   + " & " + coaxfit_test::coaxfit_executable + " --quiet "
-                  + small + "--set Geometry/d=0.2 "
+                  + small + "--set \"Fit/Diametral interference=0.4\" "
                   + "--set Output/Directory=" + dir + " " + case_file
                   + " >/dev/null; a=$?; wait $!; exit $((a + $?)); :");
   std::cout << "two concurrent runs: exit codes sum " << r.exit_code << '\n';

@@ -26,12 +26,17 @@ namespace
 {
   /** A valid parameter file, line by line. */
   const std::vector<std::string> lines = {"subsection Geometry",
-                                          "  set R0 = 0",
-                                          "  set R1 = 100",
-                                          "  set R2 = 200",
-                                          "  set L1 = 200",
-                                          "  set L2 = 100",
-                                          "  set d  = 0.25",
+                                          "  set Joint diameter = 200",
+                                          "  set Shaft bore diameter = 0",
+                                          "  set Hub outer diameter = 400",
+                                          "  set Shaft length = 400",
+                                          "  set Hub length = 200",
+                                          "end",
+                                          "subsection Fit",
+                                          "  set Diametral interference = 0.5",
+                                          "  set ISO fit = H7/s6",
+                                          "  set Case = mean",
+                                          "  set Shaft roughness Rz = 4",
                                           "end",
                                           "subsection Mesh",
                                           "  set Axial cells = 6",
@@ -47,6 +52,7 @@ namespace
                                           "end",
                                           "subsection Material",
                                           "  subsection Shaft",
+                                          "    set Name = C45",
                                           "    set E  = 2e5",
                                           "    set nu = 0.33",
                                           "  end",
@@ -58,11 +64,12 @@ namespace
 
   /** Values a mutation puts in place of a valid one. */
   const std::vector<std::string> tokens
-    = {"",      "-1",  "0",      "0.5",         "1e300",  "-1e-300",
-       "nan",   "inf", "abc",    "1,5",         "0x10",   "true",
-       "2e5x",  "= 3", "99",     "1e-9",        "1e-320", "4.9e-324",
-       "1e308", "-0",  " 0.5\t", "0.5\x01",     "\x7f",   "1",
-       "2",     "3",   "10000",  "include SELF"};
+    = {"",        "-1",    "0",      "0.5",          "1e300",  "-1e-300",
+       "nan",     "inf",   "abc",    "1,5",          "0x10",   "true",
+       "2e5x",    "= 3",   "99",     "1e-9",         "1e-320", "4.9e-324",
+       "1e308",   "-0",    " 0.5\t", "0.5\x01",      "\x7f",   "1",
+       "2",       "3",     "10000",  "include SELF", "all",    "min",
+       "H7/zc11", "h7/S6", "S355",   "EN AW-6082 T6"};
 
 
 
@@ -92,10 +99,17 @@ namespace
 
   constexpr unsigned int n_mutations = 80;
 
-  /** summary.json exists and parses as JSON. */
+  /**
+   * summary.json exists and parses as JSON (for Fit/Case = all: in each of
+   * the subdirectories min, mean and max).
+   */
   bool
   summary_is_valid(const std::string &directory)
   {
+    if (std::filesystem::exists(directory + "/fit_cases.csv"))
+      return summary_is_valid(directory + "/min")
+             && summary_is_valid(directory + "/mean")
+             && summary_is_valid(directory + "/max");
     std::ifstream in(directory + "/summary.json");
     return in && nlohmann::json::accept(in);
   }
@@ -104,8 +118,11 @@ namespace
   bool
   all_finite(const std::string &directory)
   {
-    for (const auto &entry : std::filesystem::directory_iterator(directory))
+    for (const auto &entry :
+         std::filesystem::recursive_directory_iterator(directory))
       {
+        if (entry.is_directory())
+          continue;
         std::ifstream      in(entry.path());
         std::ostringstream text;
         text << in.rdbuf();

@@ -53,11 +53,11 @@ def lame_case(case, settings, bound, limit=""):
 for beta1 in [0.99, 0.995, 0.999]:
     tol = ["Coupling/Tolerance=1e-5"] if beta1 > 0.995 else []
     lame_case("thin tube beta1 = %g" % beta1,
-              ["Geometry/R0=%g" % (100 * beta1)] + tol, 1e-3)
+              ["Geometry/Shaft bore diameter=%g" % (200 * beta1)] + tol, 1e-3)
 # The tightest wall with the default tolerance 1e-8: the round-off floor of
 # the interface residual may lie above it; then the run must stop cleanly
 # (exit 2, a message naming the floor), not loop or write garbage.
-s, code, err = run("lame", ["Geometry/R0=99.9"])
+s, code, err = run("lame", ["Geometry/Shaft bore diameter=199.8"])
 if s is not None and s["converged"]:
     worst, mean = lame_errors(s)
     add("thin tube beta1 = 0.999, tolerance 1e-8", "converges, or stops at the round-off floor",
@@ -67,7 +67,7 @@ else:
         "exit %d: %s" % (code, err[:70]), False,
         "round-off floor above the tolerance" if code == 2 and "round-off" in err else "")
 for beta2 in [1.05, 1.02, 1.01]:
-    lame_case("thin hub beta2 = %g" % beta2, ["Geometry/R2=%g" % (100 * beta2)], 1e-3)
+    lame_case("thin hub beta2 = %g" % beta2, ["Geometry/Hub outer diameter=%g" % (200 * beta2)], 1e-3)
 
 # Nearly incompressible material: FE degree 1-3, full and selective reduced
 # integration of the volumetric part.
@@ -128,7 +128,7 @@ for level in range(5):
 # p(0)/d and the peak pressure / d must not depend on d.
 ratios = []
 for exponent in range(-7, -1):
-    s, _, _ = run("variant_05", ["Geometry/d=%g" % (100 * 10 ** exponent)])
+    s, _, _ = run("variant_05", ["Fit/Diametral interference=%g" % (200 * 10 ** exponent)])
     if s is not None:
         ratios.append((s["pressure"]["at_mid_plane"] / s["geometry"]["d"],
                        s["pressure"]["max"] / s["geometry"]["d"]))

@@ -119,6 +119,13 @@ namespace coaxfit
       return body_material;
     }
 
+    /** Whether the lambda part is integrated with the reduced rule. */
+    bool
+    reduced_integration() const
+    {
+      return reduced_volumetric_integration;
+    }
+
     const DoFHandler<2> &
     get_dof_handler() const
     {

@@ -8,6 +8,7 @@
 #include <coaxfit/body_solver.h>
 #include <coaxfit/condensed_body.h>
 #include <coaxfit/contact_interface.h>
+#include <coaxfit/fit_design.h>
 #include <coaxfit/interface_solver.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/pressure_summary.h>
@@ -61,6 +62,14 @@ namespace coaxfit
     bool
     run();
 
+    /**
+     * Run the case into the existing directory @p directory (no staging,
+     * no commit): what run() does between its checks and its commit, for a
+     * caller that stages several cases together (Fit/Case = all).
+     */
+    bool
+    run_in(const std::string &directory);
+
     /** Meshes, DoFs, matrices, the contact interface, factorizations. */
     void
     setup_system();
@@ -85,6 +94,13 @@ namespace coaxfit
     get_interface() const
     {
       return *interface;
+    }
+
+    /** The design figures (after output_results()). */
+    const FitDesign &
+    get_design() const
+    {
+      return *design;
     }
 
     /** Pressures of the current state (after solve()). */
@@ -125,6 +141,7 @@ namespace coaxfit
     std::unique_ptr<CondensedBody>      condensed_shaft, condensed_hub;
     std::unique_ptr<ContactInterface>   interface;
     std::unique_ptr<InterfaceSolver>    coupling;
+    std::unique_ptr<FitDesign>          design;
     Vector<double>                      shaft_field, hub_field;
     TimerOutput                         timer;
   };

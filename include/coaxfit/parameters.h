@@ -3,6 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <coaxfit/scene_parameters.h>
+
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,18 +16,25 @@ namespace coaxfit
 
   /**
    * Isotropic linear elastic material: Young's modulus in MPa and Poisson's
-   * ratio, with the Lame constants derived from them. Subsection
-   * `Material/Shaft` or `Material/Hub`.
+   * ratio, with the Lame constants derived from them, and the strength and
+   * physical data of the design figures. Subsection `Material/Shaft` or
+   * `Material/Hub`; a `Name` from the material library fills what the file
+   * does not give (read_parameters()).
    */
   struct Material
   {
-    double E  = 2.0e5;
-    double nu = 0.33;
+    double      E                 = 2.0e5;
+    double      nu                = 0.33;
+    std::string name              = "custom";
+    double      yield_strength    = 0.; ///< MPa; 0: unknown
+    double      density           = 0.; ///< kg/m^3; 0: unknown
+    double      thermal_expansion = 0.; ///< 1/K
 
     /**
-     * Declare `E` and `nu`, bound to the members, for the body named
-     * @p body_label in the documentation. Both define the scene: they must
-     * be given.
+     * Declare `Name`, `E`, `nu`, `Yield strength`, `Density` and `Thermal
+     * expansion`, bound to the members, for the body named @p body_label in
+     * the documentation. E and nu define the scene: they must be given,
+     * directly or by a Name.
      */
     void
     declare_parameters(ParameterHandler &prm, const std::string &body_label);
@@ -55,15 +65,19 @@ namespace coaxfit
     Material
     without_lambda() const
     {
-      return {2. * mu(), 0.};
+      Material m = *this;
+      m.E        = 2. * mu();
+      m.nu       = 0.;
+      return m;
     }
   };
 
   /**
-   * Subsection `Geometry` (mm). L1 and L2 are *half* lengths measured from
-   * the common mid-plane z = 0, as in the paper's table: each cylinder is
-   * 2 L long and only the half z >= 0 is modelled. Every entry defines the
-   * scene and must be given.
+   * The half section the finite element model uses (mm), derived from the
+   * drawing (`Geometry`) and the fit (`Fit`) by Parameters::derive_model(),
+   * in the paper's terms: radii, *half* lengths measured from the common
+   * mid-plane z = 0 (only z >= 0 is modelled) and the radial effective
+   * interference d = U_w / 2. Not a parameter of the file.
    */
   struct GeometryParameters
   {
@@ -74,10 +88,7 @@ namespace coaxfit
     double L2 = 100.; ///< half length of the hub
     double d  = 0.25; ///< radial interference
 
-    void
-    declare_parameters(ParameterHandler &prm);
-
-    /** Relations between the radii and lengths. */
+    /** Relations between the radii and lengths (an internal check). */
     void
     validate() const;
 
@@ -243,6 +254,8 @@ namespace coaxfit
     /** As given; Parameters::output_directory() resolves an empty one. */
     std::string directory;
     bool        write_vtu    = true;
+    bool        write_plots  = true;
+    bool        write_report = true;
     bool        print_timing = true;
 
     void
@@ -264,9 +277,13 @@ namespace coaxfit
    */
   struct Parameters
   {
-    GeometryParameters geometry;
-    Material           shaft; ///< material of D1 (shaft or tube)
-    Material           hub;   ///< material of D2 (hub)
+    DrawingGeometry    drawing;    ///< `Geometry`: diameters, full lengths
+    FitParameters      fit;        ///< `Fit`
+    FitLimits          fit_limits; ///< the interference in use (derived)
+    GeometryParameters geometry;   ///< the model's half section (derived)
+    Material           shaft;      ///< material of D1 (shaft or tube)
+    Material           hub;        ///< material of D2 (hub)
+    DesignParameters   design;
     MeshParameters     mesh;
     SolverParameters   solver;
     CouplingParameters coupling;
@@ -282,6 +299,9 @@ namespace coaxfit
      * run can be repeated. Empty for objects not made by read_parameters().
      */
     std::string used_prm, used_json;
+
+    /** Notes of read_parameters() about the input (an ignored entry). */
+    std::vector<std::string> read_notes;
 
     /** Declare every entry in @p prm, bound to the members of this object. */
     void
@@ -303,6 +323,29 @@ namespace coaxfit
     void
     set(const std::string &path, const std::string &value);
 
+    /**
+     * Set geometry (the model's half section) from drawing and fit_limits:
+     * R = D/2, L = length/2, d = U_w/2.
+     */
+    void
+    derive_model();
+
+    /**
+     * This object for the fit case @p c (mean, min or max): fit_limits and
+     * the model's interference follow, the case name gets the suffix
+     * `_min`, `_mean` or `_max` when Fit/Case is all.
+     */
+    Parameters
+    for_fit_case(FitCase c) const;
+
+    /**
+     * Warnings about legal input that is probably a mistake (interference
+     * above 0.3 % of D_F, Young's moduli differing by more than 1e3), one
+     * line each.
+     */
+    std::vector<std::string>
+    input_warnings() const;
+
     /** The output directory: Output/Directory or output/<case name>. */
     std::string
     output_directory() const;
@@ -318,6 +361,16 @@ namespace coaxfit
   read_parameters(
     const std::string                                      &filename,
     const std::vector<std::pair<std::string, std::string>> &overrides);
+
+  /**
+   * Complete the scene of @p p as read: fill the materials from their Name
+   * (E and nu leave @p missing), drop `Fit/Diametral interference` from
+   * @p missing when an ISO fit decides, and, if nothing is missing, check
+   * the drawing, compute Parameters::fit_limits and derive the model's half
+   * section. InputError names the entry at fault.
+   */
+  void
+  complete_scene(Parameters &p, std::set<std::string> &missing);
 
   /** Print every parameter with its default, pattern and documentation. */
   void

@@ -5,6 +5,7 @@
 
 #include <coaxfit/body_discretization.h>
 #include <coaxfit/contact_interface.h>
+#include <coaxfit/fit_design.h>
 #include <coaxfit/interface_solver.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/pressure_summary.h>
@@ -29,6 +30,7 @@ namespace coaxfit
     const InterfaceSolver               &solver;
     const PressureSummary               &pressure;
     const Complementarity               &complementarity;
+    const FitDesign                     &design;
     const std::map<std::string, double> &timing;   ///< wall times (s)
     const std::vector<std::string>      &warnings; ///< one line each
   };
@@ -143,6 +145,55 @@ namespace coaxfit
    * report the time the other writers took.
    */
   class SummaryWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults  &results,
+          const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
+  };
+
+  /**
+   * hub_bore_stresses.csv and shaft_surface_stresses.csv: the stresses
+   * along the joint radius in each body (z, sigma_rr, sigma_zz, sigma_tt,
+   * sigma_rz, von Mises), as the design figures use them.
+   */
+  class SurfaceStressWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults  &results,
+          const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
+  };
+
+  /**
+   * contact_pressure.png, surface_stresses.png and convergence.png, drawn
+   * by gnuplot (Debian package gnuplot-nox) from the CSV files with the
+   * script plots.gp, which stays beside them for redrawing. Without gnuplot,
+   * or if it fails, the plots are skipped with a one-line note: never an
+   * error of the run.
+   */
+  class PlotWriter : public ResultWriter
+  {
+  public:
+    std::string
+    write(const RunResults  &results,
+          const std::string &directory) const override;
+
+    std::vector<std::string>
+    file_names() const override;
+  };
+
+  /**
+   * report.md: the inputs in engineering terms, the design table (FE next
+   * to DIN 7190), the warnings and the plots of the run.
+   */
+  class ReportWriter : public ResultWriter
   {
   public:
     std::string

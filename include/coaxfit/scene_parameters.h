@@ -1,0 +1,131 @@
+#ifndef coaxfit_scene_parameters_h
+#define coaxfit_scene_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  using namespace dealii;
+
+  /**
+   * Subsection `Geometry`: the joint as a drawing gives it, in DIN 7190's
+   * terms: diameters and full lengths in mm, the hub centred on the shaft.
+   * Parameters::derive_model() turns it into the half section the finite
+   * element model uses (GeometryParameters: radii and half lengths).
+   */
+  struct DrawingGeometry
+  {
+    double joint_diameter      = 200.; ///< D_F
+    double shaft_bore_diameter = 0.;   ///< D_iI (0: solid shaft)
+    double hub_outer_diameter  = 400.; ///< D_aA
+    double hub_length          = 200.; ///< full length of the hub
+    double shaft_length        = 400.; ///< full length of the shaft
+
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Relations between the entries; InputError names the entry. */
+    void
+    validate() const;
+  };
+
+  /** Which interference of a toleranced fit a run uses (`Fit/Case`). */
+  enum class FitCase
+  {
+    mean,
+    min,
+    max,
+    all ///< the three in one run
+  };
+
+  /** Subsection `Fit`: the interference, given or from an ISO 286 fit. */
+  struct FitParameters
+  {
+    double      diametral_interference = 0.5; ///< U (mm)
+    std::string iso_fit;                      ///< e.g. "H7/s6"; empty: none
+    FitCase     fit_case        = FitCase::mean;
+    double      shaft_roughness = 0.; ///< Rz of the shaft (micrometres)
+    double      hub_roughness   = 0.; ///< Rz of the hub bore (micrometres)
+
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /** DIN 7190's smoothing loss 0.8 (Rz_shaft + Rz_hub) in mm. */
+    double
+    smoothing_loss() const
+    {
+      return 0.8e-3 * (shaft_roughness + hub_roughness);
+    }
+  };
+
+  /**
+   * The interference a run uses, with where it came from: the limits of a
+   * toleranced fit (ISO 286 deviations in mm), the case chosen and the
+   * smoothing loss. All lengths in mm; deviations NaN without an ISO fit.
+   */
+  struct FitLimits
+  {
+    std::string source = "Fit/Diametral interference";
+    std::string iso_fit; ///< normalized, e.g. "H7/s6"; empty: none
+    double      hole_upper  = std::numeric_limits<double>::quiet_NaN();
+    double      hole_lower  = std::numeric_limits<double>::quiet_NaN();
+    double      shaft_upper = std::numeric_limits<double>::quiet_NaN();
+    double      shaft_lower = std::numeric_limits<double>::quiet_NaN();
+    double      U_min = 0.5, U_max = 0.5;
+    double      smoothing_loss = 0.;
+    FitCase     fit_case       = FitCase::mean;
+
+    /** The interference of @p c (mean, min or max) before smoothing. */
+    double
+    interference(FitCase c) const
+    {
+      return c == FitCase::min ? U_min :
+             c == FitCase::max ? U_max :
+                                 0.5 * (U_min + U_max);
+    }
+
+    /** The interference of the case in use, before smoothing. */
+    double
+    used() const
+    {
+      return interference(fit_case);
+    }
+
+    /** The effective interference U_w = U - smoothing loss. */
+    double
+    effective() const
+    {
+      return used() - smoothing_loss;
+    }
+  };
+
+  /** Subsection `Design`: what the joint must carry and how it slips. */
+  struct DesignParameters
+  {
+    double friction_coefficient          = 0.12;
+    double press_in_friction_coefficient = 0.08;
+    double required_torque               = 0.; ///< N m; 0: none
+    double required_axial_force          = 0.; ///< N; 0: none
+    double edge_distance                 = 0.; ///< mm; 0: 5 % of the hub length
+
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /** The edge distance in use for a hub of full length @p hub_length. */
+    double
+    edge_distance_for(const double hub_length) const
+    {
+      return edge_distance > 0. ? edge_distance : 0.05 * hub_length;
+    }
+  };
+
+  /** The name of a fit case as written in a parameter file. */
+  std::string
+  to_string(FitCase value);
+} // namespace coaxfit
+
+#endif

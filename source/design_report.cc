@@ -52,6 +52,22 @@ namespace coaxfit
 
 
   std::string
+  corner_text(const FitDesign::SurfaceMaximum &m)
+  {
+    std::ostringstream text;
+    text << m.name << " " << std::setprecision(4) << m.corner << " MPa";
+    if (std::isfinite(m.corner_coarser) && m.corner_coarser > 0.)
+      text << " (one refinement coarser " << m.corner_coarser << " MPa: x"
+           << std::setprecision(3) << m.corner / m.corner_coarser
+           << " per refinement, singular)";
+    else
+      text << " (singular, grows with refinement)";
+    return text.str();
+  }
+
+
+
+  std::string
   interference_line(const Parameters &parameters)
   {
     const FitLimits   &f = parameters.fit_limits;
@@ -99,8 +115,7 @@ namespace coaxfit
           << std::setprecision(3) << design.edge_distance
           << " mm from the end of the joint";
     for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
-      table << "; at the end, " << m.name << " " << std::setprecision(4)
-            << m.corner << " MPa (singular, grows with refinement)";
+      table << "; at the end, " << corner_text(m);
     table << ")\n";
     out << table.str();
   }

@@ -783,7 +783,7 @@ namespace coaxfit
       list.push_back("Young's moduli of shaft (" + number(shaft.E)
                      + " MPa) and hub (" + number(hub.E)
                      + " MPa) differ by a factor " + number(ratio)
-                     + " (a unit slip, GPa for MPa?)");
+                     + " (a unit slip: GPa or kPa for MPa?)");
     return list;
   }
 

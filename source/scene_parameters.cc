@@ -205,6 +205,13 @@ namespace coaxfit
                       "surface are not taken. 0: 5 % of the hub length. "
                       "Allowed: 0 to 1e9.",
                       Patterns::Double(0., 1e9));
+    prm.add_parameter("Corner trend",
+                      corner_trend,
+                      "With Mesh/Global refinements >= 1: solve the case "
+                      "once more on the mesh one refinement coarser, to "
+                      "show how the stresses at the end of the joint (a "
+                      "singular corner) grow with refinement. Reported "
+                      "next to the corner values, never a design figure.");
     prm.leave_subsection();
   }
 } // namespace coaxfit

@@ -91,8 +91,7 @@ namespace coaxfit
         << " mm from the end of the joint, where the stresses are singular "
            "(there: ";
     for (const FitDesign::SurfaceMaximum &m : d.surface_maxima)
-      out << m.name << " " << figure(m.corner) << " MPa"
-          << (&m == &d.surface_maxima.back() ? "" : ", ");
+      out << corner_text(m) << (&m == &d.surface_maxima.back() ? "" : "; ");
     out << "; these grow under mesh refinement and are not design "
            "figures).\n\n";
 

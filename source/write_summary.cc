@@ -143,9 +143,11 @@ namespace coaxfit
                             {"hoop", c.din.hoop},
                             {"equivalent", c.din.equivalent()}}}};
       for (const FitDesign::SurfaceMaximum &m : d.surface_maxima)
-        maxima[m.name] = {{"von_mises", m.von_mises},
-                          {"z", m.z},
-                          {"at_joint_end_singular", m.corner}};
+        maxima[m.name]
+          = {{"von_mises", m.von_mises},
+             {"z", m.z},
+             {"at_joint_end_singular", m.corner},
+             {"at_joint_end_one_refinement_coarser", m.corner_coarser}};
       const DesignParameters &p = results.parameters.design;
       return {{"units", "MPa, N, N m, mm"},
               {"friction_coefficient", p.friction_coefficient},

@@ -123,6 +123,14 @@ namespace coaxfit
     std::unique_ptr<InterfaceSolver>
     make_staggered_coupling();
 
+    /**
+     * The von Mises stresses at the end of the joint (hub bore, shaft
+     * surface) of the same case solved one refinement coarser; empty if
+     * that solve diverged.
+     */
+    std::vector<double>
+    coarser_corner_values() const;
+
     /** Warnings about the final state with @p pressure, one line each. */
     std::vector<std::string>
     warnings(const PressureSummary &pressure) const;

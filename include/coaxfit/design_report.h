@@ -21,6 +21,13 @@ namespace coaxfit
   std::vector<DesignRow>
   design_rows(const FitDesign &design);
 
+  /**
+   * The corner value of @p m with its refinement trend when known: singular,
+   * never a design figure.
+   */
+  std::string
+  corner_text(const FitDesign::SurfaceMaximum &m);
+
   /** One line saying which interference the run used and where from. */
   std::string
   interference_line(const Parameters &parameters);

@@ -48,6 +48,8 @@ namespace coaxfit
       std::string name;
       double      von_mises = 0., z = 0.;
       double      corner = 0.; ///< von Mises at the corner (singular)
+      /** The corner value one refinement coarser (NaN: not computed). */
+      double corner_coarser = std::numeric_limits<double>::quiet_NaN();
     };
 
     FitDesign(const Parameters         &parameters,

@@ -111,6 +111,7 @@ namespace coaxfit
     double required_torque               = 0.; ///< N m; 0: none
     double required_axial_force          = 0.; ///< N; 0: none
     double edge_distance                 = 0.; ///< mm; 0: 5 % of the hub length
+    bool   corner_trend = true; ///< solve once more, one level coarser
 
     void
     declare_parameters(ParameterHandler &prm);

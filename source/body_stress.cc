@@ -12,19 +12,6 @@
 
 namespace coaxfit
 {
-  double
-  StressState::din_equivalent() const
-  {
-    // Principal stresses: the two of the (r, z) plane and the hoop stress.
-    const double centre = 0.5 * (sigma[0] + sigma[1]);
-    const double radius = std::hypot(0.5 * (sigma[0] - sigma[1]), sigma[3]);
-    const double s_max  = std::max({centre + radius, sigma[2]});
-    const double s_min  = std::min({centre - radius, sigma[2]});
-    return 0.5 * std::sqrt(3.) * (s_max - s_min);
-  }
-
-
-
   namespace
   {
     /**

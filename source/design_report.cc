@@ -26,12 +26,9 @@ namespace coaxfit
           {c.name + ": hoop stress (MPa)", c.fe.hoop(), c.din.hoop});
         rows.push_back(
           {c.name + ": radial stress (MPa)", c.fe.radial(), c.din.radial});
-        rows.push_back({c.name + ": equivalent stress, DIN (MPa)",
-                        c.fe.din_equivalent(),
-                        c.din.equivalent()});
         rows.push_back({c.name + ": von Mises stress (MPa)",
                         c.fe.von_mises(),
-                        FitDesign::unknown});
+                        c.din.equivalent()});
       }
     for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
       {
@@ -108,10 +105,8 @@ namespace coaxfit
           }
         table << '\n';
       }
-    table << "    (equivalent stress, DIN: (sqrt(3)/2)(s_max - s_min), DIN "
-             "7190's with the plane stress of Lame, FE's with its full "
-             "state; the FE safety against yield uses von Mises; maxima at "
-             "least "
+    table << "    (von Mises: FE of its full stress state, DIN 7190 of "
+             "Lame's plane stress; maxima at least "
           << std::setprecision(3) << design.edge_distance
           << " mm from the end of the joint";
     for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)

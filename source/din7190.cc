@@ -8,9 +8,7 @@ namespace coaxfit
   double
   Din7190::CheckPoint::equivalent() const
   {
-    const double s_max = std::max({radial, hoop, 0.});
-    const double s_min = std::min({radial, hoop, 0.});
-    return 0.5 * std::sqrt(3.) * (s_max - s_min);
+    return std::sqrt(radial * radial + hoop * hoop - radial * hoop);
   }
 
 

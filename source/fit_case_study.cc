@@ -135,6 +135,12 @@ namespace coaxfit
           << "    " << std::left << std::setw(28) << "" << std::right;
     for (const Row &row : rows)
       table << std::setw(12) << to_string(row.fit_case);
+    table << "\n    " << std::left << std::setw(28) << "converged (steps)"
+          << std::right;
+    for (const Row &row : rows)
+      table << std::setw(12)
+            << ((row.converged ? "yes (" : "NO (") + std::to_string(row.steps)
+                + ")");
     table << '\n';
     for (unsigned int i = 0; i < columns.size(); ++i)
       {

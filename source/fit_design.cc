@@ -76,7 +76,8 @@ namespace coaxfit
                               const Vector<double>     &hub_field)
   {
     const GeometryParameters &g = parameters.geometry;
-    edge_distance = parameters.design.edge_distance_for(2. * g.L2);
+    edge_distance
+      = parameters.design.edge_distance_for(2. * g.contact_length());
     check_points
       = {{"hub bore", stress_at(hub, hub_field, {g.R1, 0.}), din.hub_bore()},
          {"hub outer surface",
@@ -101,6 +102,7 @@ namespace coaxfit
       {
         SurfaceMaximum m;
         m.name        = name;
+        m.von_mises   = FitDesign::unknown; // none outside the band
         double corner = std::numeric_limits<double>::max();
         for (const StressState &s : *states)
           {
@@ -110,7 +112,8 @@ namespace coaxfit
                 corner   = distance;
                 m.corner = s.von_mises();
               }
-            if (distance >= edge_distance && s.von_mises() > m.von_mises)
+            if (distance >= edge_distance
+                && !(s.von_mises() <= m.von_mises)) // NaN: the first
               {
                 m.von_mises = s.von_mises();
                 m.z         = s.z;
@@ -119,8 +122,9 @@ namespace coaxfit
         surface_maxima.push_back(m);
       }
 
+    // fmax ignores a maximum that does not exist (NaN).
     const auto largest = [](const double a, const double b, const double c) {
-      return std::max({a, b, c});
+      return std::fmax(std::fmax(a, b), c);
     };
     safety_yield_hub       = safety(parameters.hub.yield_strength,
                               largest(check_points[0].fe.von_mises(),

@@ -115,7 +115,7 @@ namespace coaxfit
       while (i < text.size()
              && std::isalpha(static_cast<unsigned char>(text[i])))
         ++i;
-      if (i == 0 || i == text.size() || text.size() - i > 2)
+      if (i == 0 || i == text.size() || text.size() - i > 2 || text[i] == '0')
         return false;
       for (std::size_t k = i; k < text.size(); ++k)
         if (!std::isdigit(static_cast<unsigned char>(text[k])))
@@ -155,7 +155,10 @@ namespace coaxfit
         || !split_class(compact.substr(slash + 1), shaft, shaft_grade))
       refuse(designation, "expected HOLE/SHAFT such as H7/s6");
     if (hole != "H")
-      refuse(designation, "only the hole-basis system (hole H) is covered");
+      refuse(designation,
+             hole == "h" ? "the hole's letter is upper case (H7/s6; a lower "
+                           "case h is a shaft)" :
+                           "only the hole-basis system (hole H) is covered");
     const auto &table = fundamental_deviations();
     const auto  row   = table.find(shaft);
     if (row == table.end())

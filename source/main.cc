@@ -152,6 +152,12 @@ coaxfit_main(int argc, char **argv)
       else
         converged = CoaxialFit(parameters, std::cout, !line.quiet).run();
       check_standard_output();
+      if (!converged)
+        std::cerr << "coaxfit: error: the coupling did not converge within "
+                     "Coupling/Max steps = "
+                  << parameters.coupling.max_steps
+                  << " (the state is written, marked \"converged\": false)"
+                  << std::endl;
       return converged ? 0 : 2;
     }
   catch (const InputError &e)

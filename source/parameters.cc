@@ -728,6 +728,12 @@ namespace coaxfit
   Parameters::validate() const
   {
     geometry.validate();
+    require(design.edge_distance < geometry.contact_length(),
+            "Design/Edge distance",
+            design.edge_distance,
+            "0 <= distance < l_F / 2 = " + number(geometry.contact_length())
+              + " mm (half the joint length: the maxima are taken between "
+                "the mid-plane and the band at the end of the joint)");
     mesh.validate();
     shaft.validate("Material/Shaft");
     hub.validate("Material/Hub");
@@ -750,6 +756,32 @@ namespace coaxfit
 
 
 
+  std::string
+  replace_prm_line(const std::string &text,
+                   const std::string &entry,
+                   const std::string &value)
+  {
+    std::istringstream lines(text);
+    std::string        line, result;
+    while (std::getline(lines, line))
+      {
+        const auto first = line.find_first_not_of(' ');
+        if (first != std::string::npos
+            && line.compare(first, 4 + entry.size(), "set " + entry) == 0
+            && line.find_first_not_of(' ', first + 4 + entry.size())
+                 == line.find('=', first))
+          {
+            if (value.empty())
+              continue;
+            line = line.substr(0, line.find('=') + 1) + " " + value;
+          }
+        result += line + '\n';
+      }
+    return result;
+  }
+
+
+
   Parameters
   Parameters::for_fit_case(const FitCase c) const
   {
@@ -761,6 +793,10 @@ namespace coaxfit
       {
         p.output.directory = output_directory() + "/" + to_string(c);
         p.case_name        = case_name + "_" + to_string(c);
+        // Its parameters.prm repeats this case alone, into its directory.
+        p.used_prm = replace_prm_line(p.used_prm, "Case", to_string(c));
+        p.used_prm
+          = replace_prm_line(p.used_prm, "Directory", p.output.directory);
       }
     return p;
   }
@@ -775,7 +811,7 @@ namespace coaxfit
     const double             D_F  = 2. * geometry.R1;
     if (U_w > 3e-3 * D_F)
       list.push_back("the effective interference " + number(U_w) + " mm is "
-                     + number(100. * U_w / D_F)
+                     + number(std::round(1e4 * U_w / D_F) / 100.)
                      + " % of the joint diameter (above 0.3 %: a unit slip, "
                        "or beyond the elastic range of most metals)");
     const double ratio = std::max(shaft.E / hub.E, hub.E / shaft.E);
@@ -889,6 +925,24 @@ namespace coaxfit
     parameters.case_name = base_name(filename);
     parameters.validate();
 
+    // The written parameters must repeat the run: the values a material
+    // Name filled in are written as given.
+    for (const auto &[path, material] :
+         {std::pair<std::string, const Material *>{"Shaft", &parameters.shaft},
+          {"Hub", &parameters.hub}})
+      if (material->name != "custom")
+        {
+          prm.enter_subsection("Material");
+          prm.enter_subsection(path);
+          prm.set("E", material->E);
+          prm.set("nu", material->nu);
+          prm.set("Yield strength", material->yield_strength);
+          prm.set("Density", material->density);
+          prm.set("Thermal expansion", material->thermal_expansion);
+          prm.leave_subsection();
+          prm.leave_subsection();
+        }
+
     std::ostringstream prm_text, json_text;
     prm.print_parameters(prm_text, ParameterHandler::ShortPRM);
     prm.print_parameters(json_text,
@@ -899,9 +953,14 @@ namespace coaxfit
     for (char &c : printable)
       if (std::iscntrl(static_cast<unsigned char>(c)))
         c = '?';
+    std::string prm_lines = prm_text.str();
+    // With an ISO fit the interference is the fit's: the entry would only
+    // be reported as not used when the file is run again.
+    if (!parameters.fit.iso_fit.empty())
+      prm_lines = replace_prm_line(prm_lines, "Diametral interference", "");
     parameters.used_prm = "# coaxfit: the parameters of this run (file '"
                           + printable + "' with the --set overrides)\n"
-                          + prm_text.str();
+                          + prm_lines;
     parameters.used_json = json_text.str();
     return parameters;
   }

@@ -85,10 +85,15 @@ namespace coaxfit
     const fs::file_status status = fs::status(target, error);
     if (status.type() == fs::file_type::directory)
       {
-        for (const auto &entry : fs::directory_iterator(target, error))
-          if (result_files.count(entry.path().filename().string()) == 0)
+        // Subdirectories (the cases of Fit/Case = all) are replaced too:
+        // everything in them must be coaxfit's as well.
+        for (auto entry = fs::recursive_directory_iterator(target, error);
+             entry != fs::recursive_directory_iterator();
+             entry.increment(error))
+          if (result_files.count(entry->path().filename().string()) == 0
+              || (entry->is_directory() && entry.depth() > 0))
             refuse(target_name,
-                   "contains '" + entry.path().filename().string()
+                   "contains '" + fs::relative(entry->path(), target).string()
                      + "', which coaxfit does not write; the results replace "
                        "the whole directory, so give an empty directory, a "
                        "new one or an earlier coaxfit result directory");

@@ -176,15 +176,15 @@ namespace coaxfit
                       "slip (DIN 7190's nu_r), for the transmissible torque "
                       "and axial force. The default is a typical value for "
                       "steel on steel; DIN 7190 tabulates it by pairing and "
-                      "joining method: set yours. Allowed: 0 < mu <= 1.",
+                      "joining method: set yours. Allowed: 1e-6 <= mu <= 1.",
                       Patterns::Double(1e-6, 1.));
     prm.add_parameter("Press-in friction coefficient",
                       press_in_friction_coefficient,
                       "Coefficient of sliding friction while the shaft is "
                       "pressed in (DIN 7190's nu_e), for the press-in "
                       "force of the interference in use (the largest with "
-                      "Case = max). Allowed: 0 < mu "
-                      "<= 1.",
+                      "Case = max). Allowed: 1e-6 <= "
+                      "mu <= 1.",
                       Patterns::Double(1e-6, 1.));
     prm.add_parameter("Required torque",
                       required_torque,
@@ -202,8 +202,9 @@ namespace coaxfit
                       "Distance in mm from the hub's edge (where the "
                       "stresses are singular) within which the maxima of "
                       "the stresses along the hub bore and the shaft "
-                      "surface are not taken. 0: 5 % of the hub length. "
-                      "Allowed: 0 to 1e9.",
+                      "surface are not taken. 0: 5 % of the joint length "
+                      "l_F (the shorter of hub and shaft). Allowed: 0 <= "
+                      "distance < l_F / 2.",
                       Patterns::Double(0., 1e9));
     prm.add_parameter("Corner trend",
                       corner_trend,

@@ -26,7 +26,13 @@ namespace coaxfit
       const double p_top = 2.5 * std::max(d.pressure_din, 1e-300);
       double       s_top = 0.;
       for (const auto &m : d.surface_maxima)
-        s_top = std::max(s_top, 1.6 * m.von_mises);
+        s_top = std::fmax(s_top, 1.6 * m.von_mises);
+      // The yield strengths are drawn where they are: the axis reaches them.
+      for (const double strength : {results.parameters.hub.yield_strength,
+                                    results.parameters.shaft.yield_strength})
+        s_top = std::max(s_top, 1.1 * strength);
+      if (!(s_top > 0.))
+        s_top = 1.;
       const Parameters  &p        = results.parameters;
       const double       z_corner = p.geometry.contact_length();
       std::ostringstream gp;
@@ -44,11 +50,12 @@ namespace coaxfit
          << "plot 'contact_pressure.csv' skip 1 using 1:2 with linespoints "
             "pt 7 ps 0.5 lw 2 title 'FE (nodal pressure)', \\\n"
          << "     " << d.pressure_din
-         << " with lines dt 2 lw 2 title 'DIN 7190 (Lame, equal lengths)', "
-            "\\\n"
-         << "     'contact_pressure.csv' skip 1 using 1:(strcol(6) eq "
-            "'separated' ? 0 : 1/0) with points pt 6 ps 1.5 lc rgb 'red' "
-            "title 'separated'\n"
+         << " with lines dt 2 lw 2 title 'DIN 7190 (Lame, equal lengths)'";
+      if (results.solver.get_active_set().n_separated() > 0)
+        gp << ", \\\n     'contact_pressure.csv' skip 1 using 1:(strcol(6) "
+              "eq 'separated' ? 0 : 1/0) with points pt 6 ps 1.5 lc rgb "
+              "'red' title 'separated'";
+      gp << "\n"
          << "\nset output 'surface_stresses.png'\n"
          << "set title 'Von Mises stress along the joint radius (excluded "
             "within "
@@ -62,28 +69,24 @@ namespace coaxfit
             "title 'hub bore', \\\n"
          << "     'shaft_surface_stresses.csv' skip 1 using 1:6 with lines "
             "lw 2 title 'shaft surface'";
-      // Yield strengths above the axis are named in their legend entry.
       for (const auto &[name, strength] :
            {std::pair<std::string, double>{"hub", p.hub.yield_strength},
             {"shaft", p.shaft.yield_strength}})
         if (strength > 0.)
-          gp << ", \\\n     " << std::min(strength, 0.98 * s_top)
-             << " with lines dt 2 lw 2 title 'yield strength, " << name
-             << (strength > 0.98 * s_top ?
-                   " " + std::to_string(int(std::lround(strength)))
-                     + " MPa (above the axis)" :
-                   std::string())
-             << "'";
+          gp << ", \\\n     " << strength << " with lines dt "
+             << (name == "hub" ? 2 : 4) << " lw 2 title 'yield strength, "
+             << name << "'";
       gp << "\n\nset output 'convergence.png'\n"
          << "unset object 1\n"
          << "set title 'Coupling: relative mismatches per step'\n"
          << "set xlabel 'step'\nset ylabel 'relative mismatch'\n"
          << "set logscale y\nset yrange [*:*]\nset key top right\n"
-         << "plot 'convergence.csv' skip 1 using 1:($4 > 0 ? $4 : 1/0) "
-            "with linespoints pt 7 title 'displacement |u2 - u1 - d|/d', "
-            "\\\n"
-         << "     'convergence.csv' skip 1 using 1:($5 > 0 ? $5 : 1/0) with "
-            "linespoints pt 5 title 'traction |p2 - p1|/|p|'\n";
+         << "plot 'convergence.csv' skip 1 using 1:(strcol(2) eq 'neumann' "
+            "&& $4 > 0 ? $4 : 1/0) with linespoints pt 7 title 'displacement "
+            "|u2 - u1 - d|/d (after Neumann steps)', \\\n"
+         << "     'convergence.csv' skip 1 using 1:(strcol(2) eq 'dirichlet' "
+            "&& $5 > 0 ? $5 : 1/0) with linespoints pt 5 title 'traction "
+            "|p2 - p1|/|p| (after Dirichlet steps)'\n";
       return gp.str();
     }
 

@@ -83,10 +83,11 @@ namespace coaxfit
           << figure(row.din) << " |\n";
     out << "\nDIN 7190 assumes a hub and shaft of equal length (Lame's plane "
            "stress); the finite element column includes the end effects. "
-           "Equivalent stress, DIN: (sqrt(3)/2)(s_max - s_min), from Lame's "
-           "stresses for DIN 7190 and from the full stress state for FE; the "
-           "FE safety against yield uses von Mises. Maxima along the "
-           "surfaces are taken at least "
+           "Von Mises stress: of the full stress state for FE, of Lame's "
+           "plane stress for DIN 7190. DIN 7190 checks slip with the smallest "
+           "interference (Fit/Case = min) and strength and the press-in "
+           "force with the largest (max); Fit/Case = all gives both. Maxima "
+           "along the surfaces are taken at least "
         << d.edge_distance
         << " mm from the end of the joint, where the stresses are singular "
            "(there: ";

@@ -6,7 +6,9 @@
 // (E 70000, nu 0.33) of D_F = 40 mm, D_aA = 80 mm and U = 0.05 mm the
 // compliance worked by hand is K = (5/3 + 0.33)/70000 + 0.7/210000
 // = 3.185714e-5 1/MPa, p = 0.05/(40 K) = 39.2377 MPa. Stresses at the check
-// points (Lame), torque M = p pi D_F^2 l_F mu / 2 and axial force
+// points (Lame) with their plane-stress von Mises stress (hub bore
+// sqrt(s_t^2 + p^2 + s_t p), free surfaces |s_t|, solid shaft p, hollow
+// shaft bore 2p/(1 - Q_I^2)), torque M = p pi D_F^2 l_F mu / 2 and axial force
 // F = p pi D_F l_F mu are checked on the same cases; relative differences
 // must be at round-off.
 
@@ -72,12 +74,14 @@ main()
     report("hub outer hoop (MPa)",
            din.hub_outer().hoop,
            2. * p * Q * Q / (1. - Q * Q));
-    report("hub bore equivalent (MPa)",
+    const double t = p * (1. + Q * Q) / (1. - Q * Q);
+    report("hub bore von Mises (MPa)",
            din.hub_bore().equivalent(),
-           std::sqrt(3.) * p / (1. - Q * Q));
-    report("shaft axis equivalent",
-           din.shaft_inner().equivalent(),
-           std::sqrt(3.) / 2. * p);
+           std::sqrt(t * t + p * p + t * p));
+    report("hub outer von Mises",
+           din.hub_outer().equivalent(),
+           2. * p * Q * Q / (1. - Q * Q));
+    report("shaft axis von Mises", din.shaft_inner().equivalent(), p);
     report("torque (N m)",
            din.torque(p, mu),
            1e-3 * p * pi * 40. * 40. * 40. * mu / 2.);
@@ -94,9 +98,9 @@ main()
     report("shaft bore hoop (MPa)",
            din.shaft_inner().hoop,
            -2. * p / (1. - I * I));
-    report("shaft bore equivalent",
+    report("shaft bore von Mises",
            din.shaft_inner().equivalent(),
-           std::sqrt(3.) * p / (1. - I * I));
+           2. * p / (1. - I * I));
     report("shaft surface hoop (MPa)",
            din.shaft_outer().hoop,
            -p * (1. + I * I) / (1. - I * I));

@@ -39,13 +39,6 @@ namespace coaxfit
     {
       return Axisymmetric::von_mises(sigma);
     }
-
-    /**
-     * Equivalent stress of DIN 7190's strength check, (sqrt(3)/2) times the
-     * difference of the largest and smallest principal stress.
-     */
-    double
-    din_equivalent() const;
   };
 
   /**

@@ -25,7 +25,11 @@ namespace coaxfit
     {
       double radial, hoop;
 
-      /** (sqrt(3)/2)(sigma_max - sigma_min) with sigma_z = 0. */
+      /**
+       * Von Mises of the plane stress state (sigma_z = 0): at the hub bore
+       * sqrt(s_t^2 + s_r^2 - s_t s_r), at a free surface |s_t|, in a solid
+       * shaft p, at a hollow shaft's bore 2p/(1 - Q_I^2).
+       */
       double
       equivalent() const;
     };

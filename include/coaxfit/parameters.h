@@ -372,6 +372,16 @@ namespace coaxfit
   void
   complete_scene(Parameters &p, std::set<std::string> &missing);
 
+  /**
+   * @p text (a parameter file as ParameterHandler prints it) with the value
+   * of every `set @p entry = ...` line replaced by @p value, or the line
+   * removed if @p value is empty.
+   */
+  std::string
+  replace_prm_line(const std::string &text,
+                   const std::string &entry,
+                   const std::string &value);
+
   /** Print every parameter with its default, pattern and documentation. */
   void
   print_parameters(std::ostream &out);

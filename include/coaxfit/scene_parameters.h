@@ -110,17 +110,17 @@ namespace coaxfit
     double press_in_friction_coefficient = 0.08;
     double required_torque               = 0.; ///< N m; 0: none
     double required_axial_force          = 0.; ///< N; 0: none
-    double edge_distance                 = 0.; ///< mm; 0: 5 % of the hub length
+    double edge_distance                 = 0.; ///< mm; 0: 5 % of l_F
     bool   corner_trend = true; ///< solve once more, one level coarser
 
     void
     declare_parameters(ParameterHandler &prm);
 
-    /** The edge distance in use for a hub of full length @p hub_length. */
+    /** The edge distance in use for a joint of length @p joint_length. */
     double
-    edge_distance_for(const double hub_length) const
+    edge_distance_for(const double joint_length) const
     {
-      return edge_distance > 0. ? edge_distance : 0.05 * hub_length;
+      return edge_distance > 0. ? edge_distance : 0.05 * joint_length;
     }
   };
 

@@ -49,6 +49,18 @@ namespace coaxfit
 
 
   std::string
+  design_figure(const double value)
+  {
+    if (!std::isfinite(value))
+      return "-";
+    std::ostringstream s;
+    s << std::setprecision(std::abs(value) >= 1e5 ? 4 : 5) << value;
+    return s.str();
+  }
+
+
+
+  std::string
   corner_text(const FitDesign::SurfaceMaximum &m)
   {
     std::ostringstream text;
@@ -96,12 +108,7 @@ namespace coaxfit
               << std::right;
         for (const double value : {row.fe, row.din})
           {
-            table << std::setw(12);
-            if (std::isnan(value))
-              table << "-";
-            else
-              table << std::setprecision(std::abs(value) >= 1e5 ? 4 : 5)
-                    << std::defaultfloat << value;
+            table << std::setw(12) << design_figure(value);
           }
         table << '\n';
       }

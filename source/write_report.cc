@@ -12,21 +12,11 @@ namespace coaxfit
   namespace
   {
     std::string
-    figure(const double value)
-    {
-      if (!std::isfinite(value))
-        return "-";
-      std::ostringstream s;
-      s << std::setprecision(std::abs(value) >= 1e5 ? 4 : 5) << value;
-      return s.str();
-    }
-
-    std::string
     material_line(const Material &m)
     {
       std::ostringstream s;
       s << m.name << ": E " << m.E << " MPa, nu " << m.nu << ", yield "
-        << (m.yield_strength > 0. ? figure(m.yield_strength) + " MPa" :
+        << (m.yield_strength > 0. ? design_figure(m.yield_strength) + " MPa" :
                                     std::string("not given"));
       return s.str();
     }
@@ -40,7 +30,8 @@ namespace coaxfit
       out << "## Inputs\n\n| | |\n|---|---|\n"
           << "| joint diameter D_F | " << 2. * g.R1 << " mm |\n"
           << "| shaft bore diameter D_iI | "
-          << (g.R0 > 0. ? figure(2. * g.R0) + " mm" : std::string("solid"))
+          << (g.R0 > 0. ? design_figure(2. * g.R0) + " mm" :
+                          std::string("solid"))
           << " |\n"
           << "| hub outer diameter D_aA | " << 2. * g.R2 << " mm |\n"
           << "| hub length, shaft length | " << 2. * g.L2 << " mm, "
@@ -79,8 +70,8 @@ namespace coaxfit
     out << "## Design: finite elements next to DIN 7190\n\n"
         << "| figure | FE | DIN 7190 |\n|---|---:|---:|\n";
     for (const DesignRow &row : design_rows(d))
-      out << "| " << row.label << " | " << figure(row.fe) << " | "
-          << figure(row.din) << " |\n";
+      out << "| " << row.label << " | " << design_figure(row.fe) << " | "
+          << design_figure(row.din) << " |\n";
     out << "\nDIN 7190 assumes a hub and shaft of equal length (Lame's plane "
            "stress); the finite element column includes the end effects. "
            "Von Mises stress: of the full stress state for FE, of Lame's "
@@ -97,18 +88,19 @@ namespace coaxfit
            "figures).\n\n";
 
     const PressureSummary &ps = results.pressure;
-    out << "## Contact\n\npressure at the mid-plane " << figure(ps.at_mid_plane)
-        << " MPa, mean " << figure(ps.mean) << " MPa, Lame " << figure(ps.lame)
-        << " MPa; largest " << figure(ps.max)
-        << " MPa at z = " << figure(ps.z_of_max)
+    out << "## Contact\n\npressure at the mid-plane "
+        << design_figure(ps.at_mid_plane) << " MPa, mean "
+        << design_figure(ps.mean) << " MPa, Lame " << design_figure(ps.lame)
+        << " MPa; largest " << design_figure(ps.max)
+        << " MPa at z = " << design_figure(ps.z_of_max)
         << " mm (singular). Separated zones: ";
     const auto zones = results.solver.get_active_set().separated_zones(
       results.interface.z(), p.geometry.contact_length());
     if (zones.empty())
       out << "none";
     for (const auto &zone : zones)
-      out << "[" << figure(zone.first) << ", " << figure(zone.second)
-          << "] mm ";
+      out << "[" << design_figure(zone.first) << ", "
+          << design_figure(zone.second) << "] mm ";
     out << ".\n\n## Warnings\n\n";
     if (results.warnings.empty())
       out << "none\n";

@@ -22,6 +22,13 @@ namespace coaxfit
   design_rows(const FitDesign &design);
 
   /**
+   * A design figure as the table and the report print it: 5 significant
+   * digits (4 from 1e5 on), "-" for a figure that is not given (NaN).
+   */
+  std::string
+  design_figure(double value);
+
+  /**
    * The corner value of @p m with its refinement trend when known: singular,
    * never a design figure.
    */

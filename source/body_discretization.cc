@@ -23,10 +23,12 @@ namespace coaxfit
     const BodyGeometry &geometry,
     const Material     &material,
     const unsigned int  degree,
-    const bool          reduced_volumetric_integration)
+    const bool          reduced_volumetric_integration,
+    const BodyLoad     &load)
     : body_geometry(geometry)
     , body_material(material)
     , reduced_volumetric_integration(reduced_volumetric_integration)
+    , body_load(load)
     , fe(FE_Q<2>(degree), 2)
     , dof_handler(triangulation)
   {}
@@ -169,6 +171,128 @@ namespace coaxfit
 
 
 
+  Vector<double>
+  BodyDiscretization::assemble_load_vector(const BodyLoad &load) const
+  {
+    const QGauss<2> quadrature(fe.degree + 1);
+    const QGauss<2> reduced_quadrature(fe.degree);
+    const QGauss<1> face_quadrature(fe.degree + 1);
+    const auto      flags = update_values | update_gradients
+                       | update_quadrature_points | update_JxW_values;
+    FEValues<2>        fe_values(fe, quadrature, flags);
+    FEValues<2>        reduced_values(fe, reduced_quadrature, flags);
+    FEFaceValues<2>    face_values(fe,
+                                face_quadrature,
+                                update_values | update_quadrature_points
+                                  | update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>     cell_rhs(dofs_per_cell);
+    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
+    const bool     reduced = reduced_volumetric_integration;
+    const Material full_rule_material
+      = reduced ? body_material.without_lambda() : body_material;
+    const double e_th = load.thermal_strain;
+    // The eigenstress C e_th (1, 1, 1, 0); with reduced integration its
+    // lambda part 3 lambda e_th goes with the reduced rule.
+    const Axisymmetric::Vector4 thermal_stress
+      = Axisymmetric::stress(full_rule_material, {{e_th, e_th, e_th, 0.}});
+    // rho omega^2 in N/mm^4: kg/m^3 -> 1e-9 kg/mm^3, kg mm/s^2 = 1e-3 N.
+    const double centrifugal
+      = 1e-12 * body_material.density * load.omega_squared;
+    const double scale = body_geometry.r_outer;
+    // The pressure on a free face at r = r_inner or r_outer (traction
+    // along +r on the bore, along -r on the outer surface); 0 elsewhere.
+    const auto face_pressure = [&](const auto &face) {
+      if (!face->at_boundary() || face->boundary_id() == BoundaryId::contact)
+        return 0.;
+      const double r0 = face->vertex(0)[0], r1 = face->vertex(1)[0];
+      if (body_geometry.r_inner > 0.
+          && std::abs(r0 - body_geometry.r_inner) < 1e-12 * scale
+          && std::abs(r1 - body_geometry.r_inner) < 1e-12 * scale)
+        return load.inner_pressure;
+      if (std::abs(r0 - body_geometry.r_outer) < 1e-12 * scale
+          && std::abs(r1 - body_geometry.r_outer) < 1e-12 * scale)
+        return -load.outer_pressure;
+      return 0.;
+    };
+
+    Vector<double> rhs(n_dofs());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell_rhs = 0;
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double r      = fe_values.quadrature_point(q)[0];
+            const double weight = r * fe_values.JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const unsigned int comp = fe.system_to_component_index(i).first;
+                const double       N    = fe_values.shape_value(i, q);
+                const Tensor<1, 2> grad = fe_values.shape_grad(i, q);
+                const Tensor<1, 2> zero;
+                const Axisymmetric::Vector4 B
+                  = (comp == 0) ? Axisymmetric::strain(N, grad, zero, r) :
+                                  Axisymmetric::strain(0., zero, grad, r);
+                double value = 0.;
+                for (unsigned int c = 0; c < 4; ++c)
+                  value += B[c] * thermal_stress[c];
+                if (comp == 0)
+                  value += N * centrifugal * r;
+                cell_rhs[i] += value * weight;
+              }
+          }
+        if (reduced && e_th != 0.)
+          {
+            reduced_values.reinit(cell);
+            const double volumetric = 3. * body_material.lambda() * e_th;
+            for (const unsigned int q :
+                 reduced_values.quadrature_point_indices())
+              {
+                const double r = reduced_values.quadrature_point(q)[0];
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  {
+                    const unsigned int comp
+                      = fe.system_to_component_index(i).first;
+                    const Tensor<1, 2>          zero;
+                    const Axisymmetric::Vector4 B
+                      = (comp == 0) ?
+                          Axisymmetric::strain(reduced_values.shape_value(i, q),
+                                               reduced_values.shape_grad(i, q),
+                                               zero,
+                                               r) :
+                          Axisymmetric::strain(0.,
+                                               zero,
+                                               reduced_values.shape_grad(i, q),
+                                               r);
+                    cell_rhs[i] += volumetric * Axisymmetric::trace(B) * r
+                                   * reduced_values.JxW(q);
+                  }
+              }
+          }
+        for (const auto &face : cell->face_iterators())
+          {
+            const double pressure = face_pressure(face);
+            if (pressure == 0.)
+              continue;
+            face_values.reinit(cell, face);
+            for (const unsigned int q : face_values.quadrature_point_indices())
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                if (fe.system_to_component_index(i).first == 0)
+                  cell_rhs[i] += pressure * face_values.shape_value(i, q)
+                                 * face_values.quadrature_point(q)[0]
+                                 * face_values.JxW(q);
+          }
+        cell->get_dof_indices(local_dof_indices);
+        constraints.distribute_local_to_global(cell_rhs,
+                                               local_dof_indices,
+                                               rhs);
+      }
+    return rhs;
+  }
+
+
+
   void
   BodyDiscretization::assemble_interface_weights()
   {
@@ -285,7 +409,9 @@ namespace coaxfit
                                          grad[q][1],
                                          values.quadrature_point(q)[0]);
                 field[dofs_out[i]]
-                  = body_material.lambda() * Axisymmetric::trace(e);
+                  = body_material.lambda()
+                    * Axisymmetric::trace(
+                      Axisymmetric::mechanical(e, body_load.thermal_strain));
               }
           }
         ++cell_out;
@@ -308,7 +434,8 @@ namespace coaxfit
       volumetric_field(solution, dof_handler_out, field);
 
     const StressPostprocessor postprocessor(body_material,
-                                            reduced_volumetric_integration);
+                                            reduced_volumetric_integration,
+                                            body_load.thermal_strain);
     DataOut<2>                data_out;
     std::vector<std::string>  names(2, "displacement");
     std::vector<DataComponentInterpretation::DataComponentInterpretation>

@@ -88,6 +88,21 @@ namespace coaxfit
 
 
 
+  Vector<double>
+  BodySolver::solve_load_field(const Vector<double> &load)
+  {
+    AssertDimension(load.size(), body.n_dofs());
+    Vector<double> field(load);
+    cholesky.solve(factorization(
+                     std::vector<bool>(body.n_interface_points(), false)),
+                   field);
+    ++solve_count;
+    body.get_constraints().distribute(field);
+    return field;
+  }
+
+
+
   void
   BodySolver::solve(const std::vector<bool> &prescribed,
                     const Vector<double>    &displacement,

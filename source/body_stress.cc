@@ -52,11 +52,12 @@ namespace coaxfit
               q = k;
           const double value
             = body.material().lambda()
-              * Axisymmetric::trace(
+              * Axisymmetric::trace(Axisymmetric::mechanical(
                 Axisymmetric::strain(u[q][0],
                                      grad[q][0],
                                      grad[q][1],
-                                     fe_values.quadrature_point(q)[0]));
+                                     fe_values.quadrature_point(q)[0]),
+                body.load().thermal_strain));
           for (unsigned int p = 0; p < unit_points.size(); ++p)
             result[p] += value * interpolation.shape_value(i, unit_points[p]);
         }
@@ -92,12 +93,13 @@ namespace coaxfit
         {
           const Point<2> &x = fe_values.quadrature_point(q);
           states[q].z       = x[1];
-          states[q].sigma
-            = Axisymmetric::stress(material,
-                                   Axisymmetric::strain(values[q][0],
-                                                        gradients[q][0],
-                                                        gradients[q][1],
-                                                        std::max(x[0], 0.)));
+          states[q].sigma   = Axisymmetric::stress(
+            material,
+            Axisymmetric::mechanical(Axisymmetric::strain(values[q][0],
+                                                          gradients[q][0],
+                                                          gradients[q][1],
+                                                          std::max(x[0], 0.)),
+                                     body.load().thermal_strain));
           for (unsigned int c = 0; c < 3; ++c)
             states[q].sigma[c] += volumetric[q];
         }

@@ -6,6 +6,7 @@
 #include <coaxfit/design_report.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/monolithic_solver.h>
+#include <coaxfit/operation_analysis.h>
 #include <coaxfit/resources.h>
 #include <coaxfit/result_directory.h>
 #include <coaxfit/result_writers.h>
@@ -60,6 +61,26 @@ namespace coaxfit
 
 
 
+  BodyLoad
+  body_load(const Parameters &parameters, const bool shaft)
+  {
+    const OperationParameters &o = parameters.operation;
+    const Material            &m = shaft ? parameters.shaft : parameters.hub;
+    BodyLoad                   load;
+    load.thermal_strain
+      = m.thermal_expansion
+        * ((shaft ? o.shaft_temperature() : o.hub_temperature())
+           - o.assembly_temperature);
+    load.omega_squared = o.omega() * o.omega();
+    if (shaft)
+      load.inner_pressure = o.shaft_bore_pressure;
+    else
+      load.outer_pressure = o.hub_outer_pressure;
+    return load;
+  }
+
+
+
   std::unique_ptr<BodyDiscretization>
   make_body(const Parameters &parameters, const bool shaft)
   {
@@ -67,7 +88,8 @@ namespace coaxfit
       shaft ? shaft_geometry(parameters) : hub_geometry(parameters),
       shaft ? parameters.shaft : parameters.hub,
       parameters.mesh.degree,
-      parameters.mesh.reduced_volumetric_integration());
+      parameters.mesh.reduced_volumetric_integration(),
+      body_load(parameters, shaft));
   }
 
 
@@ -94,9 +116,6 @@ namespace coaxfit
       hub->setup_system();
       shaft->assemble_system();
       hub->assemble_system();
-      interface    = std::make_unique<ContactInterface>(*shaft,
-                                                     *hub,
-                                                     parameters.geometry.d);
       shaft_solver = std::make_unique<BodySolver>(*shaft);
       hub_solver   = std::make_unique<BodySolver>(*hub);
     }
@@ -107,35 +126,86 @@ namespace coaxfit
     // with prescribed points are made when the coupling first asks for
     // them (the condensed operator never does). The monolithic solver
     // factorizes its own system.
-    if (parameters.solver.method == SolverMethod::monolithic)
+    if (parameters.solver.method != SolverMethod::monolithic)
       {
-        set_blas_threads(MultithreadInfo::n_cores());
-        return;
+        set_blas_threads(1);
+        TimerOutput::Scope      scope(timer, "factorization");
+        const std::vector<bool> none(shaft->n_interface_points(), false);
+        concurrently([&]() { shaft_solver->factorize(none); },
+                     [&]() { hub_solver->factorize(none); });
       }
-    set_blas_threads(1);
-    TimerOutput::Scope      scope(timer, "factorization");
-    const std::vector<bool> none(interface->n_points(), false);
-    concurrently([&]() { shaft_solver->factorize(none); },
-                 [&]() { hub_solver->factorize(none); });
+    setup_loads();
+    if (parameters.solver.method == SolverMethod::monolithic)
+      set_blas_threads(MultithreadInfo::n_cores());
+  }
+
+
+
+  void
+  CoaxialFit::setup_loads()
+  {
+    // Each body's own answer to its loads of operation with a free contact
+    // surface (one solve with the free body's factorization); the coupling
+    // then sees the interference they leave at each point.
+    const unsigned int n = shaft->n_interface_points();
+    shaft_load_field.reinit(shaft->n_dofs());
+    hub_load_field.reinit(hub->n_dofs());
+    if (shaft->load().any() || hub->load().any())
+      {
+        TimerOutput::Scope scope(timer, "loads");
+        set_blas_threads(1);
+        concurrently(
+          [&]() {
+            shaft_load_field = shaft_solver->solve_load_field(
+              shaft->assemble_load_vector(shaft->load()));
+          },
+          [&]() {
+            hub_load_field = hub_solver->solve_load_field(
+              hub->assemble_load_vector(hub->load()));
+          });
+      }
+    Vector<double> u1(n), u2(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        u1[i] = shaft_load_field[shaft->get_interface_dofs()[i]];
+        u2[i] = hub_load_field[hub->get_interface_dofs()[i]];
+      }
+    interface = std::make_unique<ContactInterface>(
+      *shaft, *hub, parameters.geometry.d, u1, u2);
   }
 
 
 
   std::unique_ptr<InterfaceSolver>
-  CoaxialFit::make_staggered_coupling()
+  CoaxialFit::make_solver(const ContactInterface &contact,
+                          const bool              unilateral)
   {
+    if (parameters.solver.method == SolverMethod::monolithic)
+      return std::make_unique<MonolithicSolver>(
+        *shaft,
+        *hub,
+        contact,
+        UnilateralActiveSet(contact.n_points(),
+                            unilateral,
+                            UnilateralActiveSet::Update::when_converged),
+        parameters.coupling.max_steps);
+
     InterfaceOperator *shaft_operator = shaft_solver.get();
     InterfaceOperator *hub_operator   = hub_solver.get();
     if (use_condensed_operator())
       {
-        TimerOutput::Scope scope(timer, "condensation");
-        concurrently(
-          [&]() {
-            condensed_shaft = std::make_unique<CondensedBody>(*shaft_solver);
-          },
-          [&]() {
-            condensed_hub = std::make_unique<CondensedBody>(*hub_solver);
-          });
+        if (!condensed_shaft)
+          {
+            TimerOutput::Scope scope(timer, "condensation");
+            concurrently(
+              [&]() {
+                condensed_shaft
+                  = std::make_unique<CondensedBody>(*shaft_solver);
+              },
+              [&]() {
+                condensed_hub = std::make_unique<CondensedBody>(*hub_solver);
+              });
+          }
         shaft_operator = condensed_shaft.get();
         hub_operator   = condensed_hub.get();
       }
@@ -144,11 +214,9 @@ namespace coaxfit
       *hub_solver,
       *shaft_operator,
       *hub_operator,
-      *interface,
+      contact,
       parameters.coupling,
-      UnilateralActiveSet(interface->n_points(),
-                          parameters.contact.unilateral,
-                          active_set_mode()),
+      UnilateralActiveSet(contact.n_points(), unilateral, active_set_mode()),
       parameters.contact.active_set_tolerance);
   }
 
@@ -157,22 +225,65 @@ namespace coaxfit
   bool
   CoaxialFit::solve(std::ostream *progress)
   {
-    if (parameters.solver.method == SolverMethod::monolithic)
-      coupling = std::make_unique<MonolithicSolver>(
-        *shaft,
-        *hub,
-        *interface,
-        UnilateralActiveSet(interface->n_points(),
-                            parameters.contact.unilateral,
-                            UnilateralActiveSet::Update::when_converged),
-        parameters.coupling.max_steps);
-    else
-      coupling = make_staggered_coupling();
-
+    coupling = make_solver(*interface, parameters.contact.unilateral);
     TimerOutput::Scope scope(timer, "coupling");
     const bool         converged     = coupling->run(progress);
     std::tie(shaft_field, hub_field) = coupling->solve_fields();
+    // The contact answer plus each body's answer to its own loads.
+    shaft_field += shaft_load_field;
+    hub_field += hub_load_field;
     return converged;
+  }
+
+
+
+  Vector<double>
+  CoaxialFit::contact_force_for(const Vector<double> &interference,
+                                const bool            unilateral)
+  {
+    const Vector<double>   zero(interference.size());
+    const ContactInterface contact(*shaft, *hub, 0., interference, zero);
+    const auto             solver = make_solver(contact, unilateral);
+    if (!solver->run(nullptr))
+      throw SolverError("a solve of the operating analysis did not converge "
+                        "within Coupling/Max steps = "
+                        + std::to_string(parameters.coupling.max_steps));
+    return solver->contact_force();
+  }
+
+
+
+  Vector<double>
+  CoaxialFit::interference_change(const BodyLoad &shaft_load,
+                                  const BodyLoad &hub_load)
+  {
+    Vector<double> u1, u2;
+    concurrently(
+      [&]() {
+        u1 = shaft_solver->solve_load_field(
+          shaft->assemble_load_vector(shaft_load));
+      },
+      [&]() {
+        u2 = hub_solver->solve_load_field(hub->assemble_load_vector(hub_load));
+      });
+    Vector<double> change(interface->n_points());
+    for (unsigned int i = 0; i < change.size(); ++i)
+      change[i]
+        = u1[shaft->get_interface_dofs()[i]] - u2[hub->get_interface_dofs()[i]];
+    return change;
+  }
+
+
+
+  FitDesign
+  CoaxialFit::state_design() const
+  {
+    return FitDesign(parameters,
+                     *shaft,
+                     shaft_field,
+                     *hub,
+                     hub_field,
+                     coupling->contact_force());
   }
 
 
@@ -303,11 +414,20 @@ namespace coaxfit
         for (unsigned int i = 0; i < coarser.size(); ++i)
           design->surface_maxima[i].corner_coarser = coarser[i];
       }
+    std::unique_ptr<OperationAnalysis> operation;
+    {
+      TimerOutput::Scope scope(timer, "operation");
+      operation = std::make_unique<OperationAnalysis>(parameters, *this);
+    }
     std::vector<std::string> warning_list = parameters.input_warnings();
     for (const auto &list : {warnings(pressure), design->warnings(parameters)})
       warning_list.insert(warning_list.end(), list.begin(), list.end());
+    if (!operation->holds)
+      warning_list.push_back(operation->verdict);
     print_report(pressure, complementarity, warning_list);
     print_design(out, parameters, *design);
+    if (operation->has_loads || parameters.shaft.density > 0.)
+      operation->print(out);
 
     std::map<std::string, double> timing;
     const RunResults              results{parameters,
@@ -320,6 +440,7 @@ namespace coaxfit
                              pressure,
                              complementarity,
                              *design,
+                             *operation,
                              timing,
                              warning_list};
     std::vector<std::string>      lines;
@@ -329,10 +450,12 @@ namespace coaxfit
         lines.push_back(writer->write(results, directory));
     }
     for (const std::string phase : {"setup",
+                                    "loads",
                                     "factorization",
                                     "condensation",
                                     "coupling",
                                     "corner_trend",
+                                    "operation",
                                     "output"})
       timing[phase] = 0.;
     for (const auto &[phase, seconds] :
@@ -348,11 +471,12 @@ namespace coaxfit
       pcout << "  " << line << '\n';
     if (parameters.output.print_timing)
       pcout << std::fixed << std::setprecision(3) << "  wall time: setup "
-            << timing["setup"] << " s, factorization "
-            << timing["factorization"] << " s, condensation "
-            << timing["condensation"] << " s, coupling " << timing["coupling"]
-            << " s, corner trend " << timing["corner_trend"] << " s, output "
-            << timing["output"] << " s, total " << timing["total"] << " s\n";
+            << timing["setup"] << " s, loads " << timing["loads"]
+            << " s, factorization " << timing["factorization"]
+            << " s, condensation " << timing["condensation"] << " s, coupling "
+            << timing["coupling"] << " s, corner trend "
+            << timing["corner_trend"] << " s, output " << timing["output"]
+            << " s, total " << timing["total"] << " s\n";
   }
 
 

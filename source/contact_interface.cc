@@ -1,5 +1,6 @@
 #include <coaxfit/contact_interface.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -9,10 +10,35 @@ namespace coaxfit
   ContactInterface::ContactInterface(const BodyDiscretization &shaft,
                                      const BodyDiscretization &hub,
                                      const double              interference)
+    : ContactInterface(shaft,
+                       hub,
+                       interference,
+                       Vector<double>(shaft.n_interface_points()),
+                       Vector<double>(shaft.n_interface_points()))
+  {}
+
+
+
+  ContactInterface::ContactInterface(const BodyDiscretization &shaft,
+                                     const BodyDiscretization &hub,
+                                     const double              interference,
+                                     const Vector<double>     &u1_load,
+                                     const Vector<double>     &u2_load)
     : d(interference)
     , z_coordinates(shaft.interface_z())
     , lumped_weights(shaft.interface_weights())
+    , u1_load(u1_load)
+    , u2_load(u2_load)
+    , d_load(u1_load.size())
+    , scale(std::max(std::abs(d), 1e-12 * shaft.geometry().r_outer))
   {
+    AssertDimension(u1_load.size(), z_coordinates.size());
+    AssertDimension(u2_load.size(), z_coordinates.size());
+    for (unsigned int i = 0; i < d_load.size(); ++i)
+      {
+        d_load[i] = d + u1_load[i] - u2_load[i];
+        scale     = std::max(scale, std::abs(d_load[i]));
+      }
     const unsigned int n = z_coordinates.size();
     const double scale   = z_coordinates.empty() ? 1. : z_coordinates.back();
     if (n < 2 || hub.n_interface_points() != n)
@@ -32,7 +58,7 @@ namespace coaxfit
   {
     Vector<double> g(u2);
     g -= u1;
-    g.add(-d);
+    g -= d_load;
     return g;
   }
 
@@ -47,10 +73,10 @@ namespace coaxfit
     double mismatch = 0.;
     for (unsigned int i = 0; i < u1.size(); ++i)
       {
-        const double g = u2[i] - u1[i] - d;
+        const double g = u2[i] - u1[i] - d_load[i];
         mismatch       = std::max(mismatch, contact[i] ? std::abs(g) : -g);
       }
-    const double r = mismatch / d;
+    const double r = mismatch / scale;
     return std::isfinite(r) ? r : std::numeric_limits<double>::quiet_NaN();
   }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace coaxfit
 {
@@ -13,10 +14,76 @@ namespace coaxfit
 
 
 
+  namespace
+  {
+    /**
+     * A plane-stress ring a <= r <= b (a = 0: a solid disc) under the
+     * pressures @p p_a at r = a and @p p_b at r = b (compression positive),
+     * rotation and a thermal strain: sigma_r = A - B/r^2 - k_r r^2,
+     * sigma_t = A + B/r^2 - k_t r^2.
+     */
+    struct Ring
+    {
+      Ring(const double    a,
+           const double    b,
+           const Material &m,
+           const double    p_a,
+           const double    p_b,
+           const double    omega_squared,
+           const double    thermal_strain)
+        : m(m)
+        , thermal_strain(thermal_strain)
+      {
+        // rho omega^2 in N/mm^4 (density in kg/m^3).
+        const double c = 1e-12 * m.density * omega_squared;
+        k_r            = (3. + m.nu) / 8. * c;
+        k_t            = (1. + 3. * m.nu) / 8. * c;
+        if (a == 0.)
+          {
+            B = 0.;
+            A = -p_b + k_r * b * b;
+          }
+        else
+          {
+            B = a * a * b * b * ((p_b - p_a) / (a * a - b * b) + k_r);
+            A = -p_b + k_r * b * b + B / (b * b);
+          }
+      }
+
+      double
+      sigma_r(const double r) const
+      {
+        return r == 0. ? A : A - B / (r * r) - k_r * r * r;
+      }
+
+      double
+      sigma_t(const double r) const
+      {
+        return r == 0. ? A : A + B / (r * r) - k_t * r * r;
+      }
+
+      double
+      u(const double r) const
+      {
+        return r * (sigma_t(r) - m.nu * sigma_r(r)) / m.E + thermal_strain * r;
+      }
+
+      Material m;
+      double   thermal_strain, k_r, k_t, A, B;
+    };
+  } // namespace
+
+
+
   Din7190::Din7190(const GeometryParameters &model,
                    const Material           &shaft,
-                   const Material           &hub)
-    : D_F(2. * model.R1)
+                   const Material           &hub,
+                   const Loads              &loads)
+    : model(model)
+    , shaft(shaft)
+    , hub(hub)
+    , loads(loads)
+    , D_F(2. * model.R1)
     , Q_A(model.R1 / model.R2)
     , Q_I(model.R0 / model.R1)
     , l_F(2. * std::min(model.L1, model.L2))
@@ -30,9 +97,71 @@ namespace coaxfit
 
 
   double
+  Din7190::closing(const double pressure, const double omega_squared) const
+  {
+    const Ring hub_ring(model.R1,
+                        model.R2,
+                        hub,
+                        pressure,
+                        loads.hub_outer_pressure,
+                        omega_squared,
+                        loads.hub_thermal_strain);
+    const Ring shaft_ring(model.R0,
+                          model.R1,
+                          shaft,
+                          loads.shaft_bore_pressure,
+                          pressure,
+                          omega_squared,
+                          loads.shaft_thermal_strain);
+    return model.d - (hub_ring.u(model.R1) - shaft_ring.u(model.R1));
+  }
+
+
+
+  double
   Din7190::pressure_for(const double U_w) const
   {
-    return U_w / (D_F * K);
+    // Linear in the pressure with the slope -R1 K (the compliance of the
+    // pair): closing(p) = closing(0) - R1 K p.
+    const double left = closing(0., loads.omega_squared) + 0.5 * U_w - model.d;
+    return std::max(0., left / (model.R1 * K));
+  }
+
+
+
+  double
+  Din7190::loosening_omega() const
+  {
+    const double at_rest = closing(0., 0.);
+    const double per_omega_squared
+      = closing(0., 1.) - at_rest; // linear in omega^2
+    if (at_rest <= 0.)
+      return 0.;
+    if (per_omega_squared >= 0.)
+      return std::numeric_limits<double>::infinity();
+    return std::sqrt(-at_rest / per_omega_squared);
+  }
+
+
+
+  Din7190::CheckPoint
+  Din7190::ring_stress(const bool on_shaft, const double r) const
+  {
+    const Ring ring = on_shaft ? Ring(model.R0,
+                                      model.R1,
+                                      shaft,
+                                      loads.shaft_bore_pressure,
+                                      p,
+                                      loads.omega_squared,
+                                      loads.shaft_thermal_strain) :
+                                 Ring(model.R1,
+                                      model.R2,
+                                      hub,
+                                      p,
+                                      loads.hub_outer_pressure,
+                                      loads.omega_squared,
+                                      loads.hub_thermal_strain);
+    return {ring.sigma_r(r), ring.sigma_t(r)};
   }
 
 
@@ -40,8 +169,7 @@ namespace coaxfit
   Din7190::CheckPoint
   Din7190::hub_bore() const
   {
-    const double A2 = Q_A * Q_A;
-    return {-p, p * (1. + A2) / (1. - A2)};
+    return ring_stress(false, model.R1);
   }
 
 
@@ -49,8 +177,7 @@ namespace coaxfit
   Din7190::CheckPoint
   Din7190::hub_outer() const
   {
-    const double A2 = Q_A * Q_A;
-    return {0., 2. * p * A2 / (1. - A2)};
+    return ring_stress(false, model.R2);
   }
 
 
@@ -58,9 +185,7 @@ namespace coaxfit
   Din7190::CheckPoint
   Din7190::shaft_inner() const
   {
-    if (Q_I == 0.)
-      return {-p, -p};
-    return {0., -2. * p / (1. - Q_I * Q_I)};
+    return ring_stress(true, model.R0);
   }
 
 
@@ -68,8 +193,7 @@ namespace coaxfit
   Din7190::CheckPoint
   Din7190::shaft_outer() const
   {
-    const double I2 = Q_I * Q_I;
-    return {-p, -p * (1. + I2) / (1. - I2)};
+    return ring_stress(true, model.R1);
   }
 
 
@@ -86,5 +210,37 @@ namespace coaxfit
   Din7190::axial_force(const double pressure, const double mu) const
   {
     return pressure * M_PI * D_F * l_F * mu;
+  }
+
+
+
+  Din7190::Loads
+  operating_loads(const Parameters &parameters)
+  {
+    const OperationParameters &o = parameters.operation;
+    Din7190::Loads             loads;
+    loads.shaft_thermal_strain
+      = parameters.shaft.thermal_expansion
+        * (o.shaft_temperature() - o.assembly_temperature);
+    loads.hub_thermal_strain = parameters.hub.thermal_expansion
+                               * (o.hub_temperature() - o.assembly_temperature);
+    loads.omega_squared       = o.omega() * o.omega();
+    loads.shaft_bore_pressure = o.shaft_bore_pressure;
+    loads.hub_outer_pressure  = o.hub_outer_pressure;
+    return loads;
+  }
+
+
+
+  double
+  joining_temperature(const bool   heat_hub,
+                      const double U,
+                      const double clearance,
+                      const double D_F,
+                      const double alpha,
+                      const double temperature)
+  {
+    const double change = (U + clearance) / (alpha * D_F);
+    return heat_hub ? temperature + change : temperature - change;
   }
 } // namespace coaxfit

@@ -26,7 +26,10 @@ namespace coaxfit
                        const Vector<double>     &hub_field,
                        const Vector<double>     &contact_force)
   {
-    const Din7190 din(parameters.geometry, parameters.shaft, parameters.hub);
+    const Din7190 din(parameters.geometry,
+                      parameters.shaft,
+                      parameters.hub,
+                      operating_loads(parameters));
     double        sum = 0.;
     for (const double F : contact_force)
       sum += F;

@@ -71,7 +71,7 @@ namespace coaxfit
           constraints.add_line(n1 + dofs2[i]);
           constraints.add_entry(n1 + dofs2[i], dofs1[i], 1.);
           constraints.set_inhomogeneity(n1 + dofs2[i],
-                                        interface.interference());
+                                        interface.interference(i));
         }
     constraints.close();
     return constraints;
@@ -90,7 +90,7 @@ namespace coaxfit
     if (pattern.empty())
       setup_pattern();
 
-    // u2 = u1 + d at every tied point, as an inhomogeneous constraint on
+    // u2 = u1 + d_i at every tied point, as an inhomogeneous constraint on
     // the hub's DoF there.
     const AffineConstraints<double> constraints
       = tie_constraints(active_set.in_contact());

@@ -262,10 +262,10 @@ namespace coaxfit
             "Geometry/L2",
             L2,
             "1e-4 R1 <= L2 <= 1e4 R1");
-    require(d >= 1e-9 * R1 && d <= 0.1 * R1,
+    require(d >= -0.1 * R1 && d <= 0.1 * R1,
             "Geometry/d",
             d,
-            "1e-9 R1 <= d <= 0.1 R1 (R1 = " + number(R1) + ")");
+            "-0.1 R1 <= d <= 0.1 R1 (R1 = " + number(R1) + ")");
   }
 
 
@@ -699,6 +699,7 @@ namespace coaxfit
       }
     prm.leave_subsection();
     design.declare_parameters(prm);
+    operation.declare_parameters(prm);
     mesh.declare_parameters(prm);
     solver.declare_parameters(prm);
     coupling.declare_parameters(prm);
@@ -737,6 +738,30 @@ namespace coaxfit
     mesh.validate();
     shaft.validate("Material/Shaft");
     hub.validate("Material/Hub");
+    operation.validate(2. * geometry.R1, geometry.R0 == 0.);
+    // Loads of operation need the material data that turn them into
+    // forces; 0 means unknown there.
+    for (const auto &[material, path] :
+         {std::pair<const Material *, std::string>{&shaft, "Material/Shaft"},
+          {&hub, "Material/Hub"}})
+      {
+        const double T = material == &shaft ? operation.shaft_temperature() :
+                                              operation.hub_temperature();
+        if (T != operation.assembly_temperature
+            && material->thermal_expansion == 0.)
+          throw InputError("parameter " + path
+                           + "/Thermal expansion = 0 (unknown) but the "
+                             "operating temperature differs from "
+                             "Operation/Assembly temperature: allowed is a "
+                             "coefficient > 0 in 1/K (or a Name that "
+                             "gives it).");
+        if (operation.speed > 0. && material->density == 0.)
+          throw InputError("parameter " + path
+                           + "/Density = 0 (unknown) but Operation/Speed = "
+                           + number(operation.speed)
+                           + " 1/min: allowed is a density > 0 in kg/m^3 "
+                             "(or a Name that gives it).");
+      }
     coupling.validate();
     contact.validate();
   }

@@ -1,4 +1,4 @@
-#include <coaxfit/lame.h>
+#include <coaxfit/din7190.h>
 #include <coaxfit/pressure_summary.h>
 
 #include <algorithm>
@@ -12,12 +12,11 @@ namespace coaxfit
     : pressure(interface.pressure(force))
     , at_mid_plane(pressure[0])
     , mean(interface.mean_pressure(force))
-    , lame(lame_pressure(parameters.geometry.R0,
-                         parameters.geometry.R1,
-                         parameters.geometry.R2,
-                         parameters.geometry.d,
-                         parameters.shaft,
-                         parameters.hub))
+    , lame(Din7190(parameters.geometry,
+                   parameters.shaft,
+                   parameters.hub,
+                   operating_loads(parameters))
+             .pressure())
   {
     const auto [lo, hi] = std::minmax_element(pressure.begin(), pressure.end());
     min                 = *lo;
@@ -37,7 +36,7 @@ namespace coaxfit
     const Vector<double> p = interface.pressure(coupling.contact_force());
     const Vector<double> gap
       = interface.gap(coupling.u_shaft(), coupling.u_hub());
-    const double d     = interface.interference();
+    const double d     = interface.displacement_scale();
     double       p_max = interface.max_pressure(coupling.contact_force());
     if (p_max == 0.)
       p_max = 1.;

@@ -4,6 +4,8 @@
 #include <coaxfit/parameter_checks.h>
 #include <coaxfit/parameters.h>
 
+#include <cmath>
+
 namespace coaxfit
 {
   namespace
@@ -64,7 +66,10 @@ namespace coaxfit
       return limits;
     }
 
-    /** Every case a run computes must be an interference fit. */
+    /**
+     * Every case a run computes must stay in the linear (small strain)
+     * range; a clearance (U_w <= 0) is a state like any other.
+     */
     void
     check_effective_interference(const Parameters &p)
     {
@@ -77,7 +82,8 @@ namespace coaxfit
         {
           const double U   = p.fit_limits.interference(c);
           const double U_w = U - p.fit_limits.smoothing_loss;
-          if (U_w >= 1e-9 * D && U_w <= 0.1 * D)
+          if (U_w >= -0.1 * D && U_w <= 0.1 * D
+              && (U_w == 0. || std::abs(U_w) >= 1e-9 * D))
             continue;
           const std::string what
             = p.fit.iso_fit.empty() ?
@@ -88,11 +94,9 @@ namespace coaxfit
             what
             + " gives the effective interference U_w = U - 0.8 "
               "(Rz_shaft + Rz_hub) = "
-            + number(U_w) + " mm: allowed is 1e-9 D_F <= U_w <= 0.1 D_F (D_F = "
-            + number(D) + " mm)"
-            + (U_w < 1e-9 * D ? "; with no effective interference the "
-                                "parts do not press on each other" :
-                                ""));
+            + number(U_w)
+            + " mm: allowed is 0 or 1e-9 D_F <= |U_w| <= 0.1 D_F (D_F = "
+            + number(D) + " mm; negative: a clearance)");
         }
     }
   } // namespace

@@ -120,8 +120,10 @@ namespace coaxfit
                       "DIAMETER exceeds the bore's by U (the radial "
                       "interference is U/2). The model is linear (small "
                       "strain), so U/D_F should stay well below 0.01. "
-                      "Required unless ISO fit is given. Allowed: after the "
-                      "smoothing loss, 1e-9 D_F <= U_w <= 0.1 D_F.",
+                      "Required unless ISO fit is given. Zero or negative: a "
+                      "clearance (the parts touch only if loads of "
+                      "Operation close it). Allowed: after the smoothing "
+                      "loss, 0 or 1e-9 D_F <= |U_w| <= 0.1 D_F.",
                       Patterns::Double(),
                       true);
     prm.add_parameter("ISO fit",

@@ -99,13 +99,13 @@ namespace coaxfit
   StaggeredCoupling::dirichlet_step()
   {
     const unsigned int       n       = force.size();
-    const double             d       = interface.interference();
     const std::vector<bool> &contact = active_set.in_contact();
     Vector<double>           u_shaft(n), u_hub(n), zero(n), f1, f2;
     for (unsigned int i = 0; i < n; ++i)
       {
-        u_shaft[i] = u1[i] + (1. - rule->alpha(i)) * (u2[i] - d - u1[i]);
-        u_hub[i]   = u_shaft[i] + d;
+        const double d = interface.interference(i);
+        u_shaft[i]     = u1[i] + (1. - rule->alpha(i)) * (u2[i] - d - u1[i]);
+        u_hub[i]       = u_shaft[i] + d;
       }
     // Contact points get the blended displacement, separated points stay
     // traction free in both bodies.
@@ -122,7 +122,10 @@ namespace coaxfit
     const double tension  = clamping ? interface.max_tension(force) : 0.;
     const double magnitude
       = std::max(interface.max_pressure(f1), interface.max_pressure(f2));
-    last_traction_mismatch = std::max(mismatch, tension) / magnitude;
+    // No force anywhere (every point separated, or no interference): the
+    // bodies agree exactly.
+    last_traction_mismatch
+      = magnitude > 0. ? std::max(mismatch, tension) / magnitude : 0.;
     if (!std::isfinite(last_traction_mismatch))
       last_traction_mismatch = std::numeric_limits<double>::quiet_NaN();
 

@@ -4,9 +4,11 @@
 namespace coaxfit
 {
   StressPostprocessor::StressPostprocessor(const Material &material,
-                                           const bool      volumetric_component)
+                                           const bool      volumetric_component,
+                                           const double    thermal_strain)
     : material(material)
     , volumetric_component(volumetric_component)
+    , thermal_strain(thermal_strain)
   {}
 
 
@@ -23,10 +25,12 @@ namespace coaxfit
       {
         Axisymmetric::Vector4 sigma = Axisymmetric::stress(
           shear_only,
-          Axisymmetric::strain(inputs.solution_values[q][0],
-                               inputs.solution_gradients[q][0],
-                               inputs.solution_gradients[q][1],
-                               inputs.evaluation_points[q][0]));
+          Axisymmetric::mechanical(
+            Axisymmetric::strain(inputs.solution_values[q][0],
+                                 inputs.solution_gradients[q][0],
+                                 inputs.solution_gradients[q][1],
+                                 inputs.evaluation_points[q][0]),
+            thermal_strain));
         if (volumetric_component)
           for (unsigned int c = 0; c < 3; ++c)
             sigma[c] += inputs.solution_values[q][2];

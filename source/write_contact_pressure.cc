@@ -13,11 +13,14 @@ namespace coaxfit
     const InterfaceSolver &solver = results.solver;
     const Vector<double>   gap
       = results.interface.gap(solver.u_shaft(), solver.u_hub());
+    // Total displacements: the contact answer plus the loads of operation.
+    const Vector<double> &load1 = results.interface.load_displacement(true);
+    const Vector<double> &load2 = results.interface.load_displacement(false);
     out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n";
     for (unsigned int i = 0; i < results.interface.n_points(); ++i)
       out << results.interface.z()[i] << ',' << results.pressure.pressure[i]
-          << ',' << solver.u_shaft()[i] << ',' << solver.u_hub()[i] << ','
-          << gap[i]
+          << ',' << solver.u_shaft()[i] + load1[i] << ','
+          << solver.u_hub()[i] + load2[i] << ',' << gap[i]
           << (solver.get_active_set().in_contact()[i] ? ",contact\n" :
                                                         ",separated\n");
     close_result_file(out, directory + "/" + name);

@@ -1,5 +1,6 @@
 #include <coaxfit/result_writers.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -87,7 +88,13 @@ namespace coaxfit
           separated += zone.second - zone.first;
           zone_list.push_back({zone.first, zone.second});
         }
-      return {{"unilateral", set.enabled()},
+      const bool lost = set.n_separated() == results.interface.n_points()
+                        || !(results.pressure.max > 0.);
+      return {{"state",
+               lost           ? "lost" :
+               separated > 0. ? "partial" :
+                                "full"},
+              {"unilateral", set.enabled()},
               {"active_set_update",
                set.update_mode() == UnilateralActiveSet::Update::every_step ?
                  "every step" :
@@ -174,6 +181,70 @@ namespace coaxfit
               {"check_points_mid_plane", checks},
               {"surface_maxima", maxima}};
     }
+
+    Json
+    state(const OperationAnalysis::State &s)
+    {
+      return {{"pressure_at_mid_plane", s.pressure_mid_plane},
+              {"pressure_mean", s.pressure_mean},
+              {"pressure_max", s.pressure_max},
+              {"pressure_din", s.pressure_din},
+              {"torque_capacity", s.torque_capacity},
+              {"torque_capacity_din", s.torque_capacity_din},
+              {"axial_force_capacity", s.axial_force_capacity},
+              {"axial_force_capacity_din", s.axial_force_capacity_din},
+              {"safety_slip", s.safety_slip},
+              {"safety_slip_din", s.safety_slip_din},
+              {"safety_yield_shaft", s.safety_yield_shaft},
+              {"safety_yield_hub", s.safety_yield_hub},
+              {"separated_length", s.separated_length},
+              {"contact_lost", s.contact_lost},
+              {"converged", s.converged},
+              {"iterations", s.iterations}};
+    }
+
+    Json
+    operation(const RunResults &results)
+    {
+      const OperationAnalysis   &a = results.operation;
+      const OperationParameters &o = results.parameters.operation;
+      // Infinite speeds (rotation never opens the joint) are null with a
+      // flag, as JSON has no infinity.
+      const auto speed = [](const double n) {
+        return std::isinf(n) ? Json(nullptr) : Json(n);
+      };
+      return {
+        {"units", "MPa, N, N m, mm, degrees C, 1/min"},
+        {"loads",
+         {{"assembly_temperature", o.assembly_temperature},
+          {"shaft_temperature", o.shaft_temperature()},
+          {"hub_temperature", o.hub_temperature()},
+          {"speed", o.speed},
+          {"shaft_bore_pressure", o.shaft_bore_pressure},
+          {"hub_outer_pressure", o.hub_outer_pressure},
+          {"any", a.has_loads}}},
+        {"assembly", state(a.assembly)},
+        {"operating", state(a.operation)},
+        {"loosening_speed", speed(a.loosening_speed_whole)},
+        {"loosening_speed_first_point", speed(a.loosening_speed_first)},
+        {"loosening_speed_din", speed(a.loosening_speed_din)},
+        {"loosening_never",
+         std::isinf(a.loosening_speed_whole)
+           || std::isinf(a.loosening_speed_first)},
+        {"loosening_check",
+         {{"min_pressure_at_first_point_speed", a.min_pressure_at_first},
+          {"separated_points_1_percent_below_first", a.separated_below_first},
+          {"separated_points_1_percent_above_first", a.separated_above_first},
+          {"max_pressure_at_whole_joint_speed", a.max_pressure_at_whole}}},
+        {"loosening_note", a.loosening_note},
+        {"joining",
+         {{"interference_max", a.joining_interference},
+          {"clearance", a.joining_clearance},
+          {"hub_temperature", a.joining_temperature_hub},
+          {"shaft_temperature", a.joining_temperature_shaft}}},
+        {"holds", a.holds},
+        {"verdict", a.verdict}};
+    }
   } // namespace
 
 
@@ -191,17 +262,18 @@ namespace coaxfit
       = results.solver.steps_to_displacement_mismatch(1e-2);
     j.update(geometry_and_mesh(results));
     j.update(coupling_and_solver(results));
-    j["pressure"] = {{"units", "MPa, compression positive"},
-                     {"at_mid_plane", ps.at_mid_plane},
-                     {"mean", ps.mean},
-                     {"min", ps.min},
-                     {"z_of_min", ps.z_of_min},
-                     {"max", ps.max},
-                     {"z_of_max", ps.z_of_max},
-                     {"lame", ps.lame},
-                     {"tensile", ps.min < 0.}};
-    j["contact"]  = contact(results);
-    j["design"]   = design(results);
+    j["pressure"]  = {{"units", "MPa, compression positive"},
+                      {"at_mid_plane", ps.at_mid_plane},
+                      {"mean", ps.mean},
+                      {"min", ps.min},
+                      {"z_of_min", ps.z_of_min},
+                      {"max", ps.max},
+                      {"z_of_max", ps.z_of_max},
+                      {"lame", ps.lame},
+                      {"tensile", ps.min < 0.}};
+    j["contact"]   = contact(results);
+    j["design"]    = design(results);
+    j["operation"] = operation(results);
     j["active_set"]
       = {{"changes", results.solver.get_active_set().n_changes()}};
     j["complementarity"]

@@ -82,7 +82,8 @@ main()
       geometry("bore_not_below_joint", "Shaft bore diameter = 200"));
   run("hub_not_above_joint",
       geometry("hub_not_above_joint", "Hub outer diameter = 180"));
-  run("U_zero", fit("U_zero", "  set Diametral interference = 0\n"));
+  run("clearance_too_large",
+      fit("clearance_too_large", "  set Diametral interference = -25\n"));
   run("shaft_length_negative",
       geometry("shaft_length_negative", "Shaft length = -5"));
   run("U_nan", fit("U_nan", "  set Diametral interference = nan\n"));
@@ -166,10 +167,23 @@ main()
       "--set \"Geometry/Joint diameter=600\" --set \"Geometry/Hub outer "
       "diameter=1200\" "
         + fit("iso_fit_diameter", "  set ISO fit = H7/s6\n"));
-  run("iso_fit_smoothed_away",
-      fit("iso_fit_smoothed_away",
-          "  set ISO fit = H7/m6\n  set Case = min\n"
-          "  set Shaft roughness Rz = 10\n  set Hub roughness Rz = 10\n"));
+  run("shaft_temperature_text",
+      "--set \"Operation/Shaft temperature=hot\" "
+        + file_with("shaft_temperature_text", ""));
+  run("hub_temperature_below_absolute_zero",
+      "--set \"Operation/Hub temperature=-300\" "
+        + file_with("hub_temperature_below_absolute_zero", ""));
+  run("bore_pressure_solid_shaft",
+      "--set \"Operation/Shaft bore pressure=10\" "
+        + file_with("bore_pressure_solid_shaft", ""));
+  run("speed_without_density",
+      "--set Operation/Speed=3000 " + file_with("speed_without_density", ""));
+  run("temperature_without_expansion",
+      "--set \"Operation/Hub temperature=120\" "
+        + file_with("temperature_without_expansion", ""));
+  run("joining_clearance_too_large",
+      "--set \"Operation/Joining clearance=50\" "
+        + file_with("joining_clearance_too_large", ""));
   run("case_without_iso_fit",
       fit("case_without_iso_fit", "  set Case = max\n"));
   run("material_unknown",

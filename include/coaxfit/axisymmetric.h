@@ -38,6 +38,19 @@ namespace coaxfit
       return {{grad_u_r[0], grad_u_z[1], e_tt, grad_u_r[1] + grad_u_z[0]}};
     }
 
+    /**
+     * The mechanical part of the strain @p e: without the thermal
+     * eigenstrain @p thermal_strain on its normal components.
+     */
+    inline Vector4
+    mechanical(const Vector4 &e, const double thermal_strain)
+    {
+      return {{e[0] - thermal_strain,
+               e[1] - thermal_strain,
+               e[2] - thermal_strain,
+               e[3]}};
+    }
+
     /** Volumetric strain e_rr + e_zz + e_tt. */
     inline double
     trace(const Vector4 &e)

@@ -19,6 +19,29 @@
 namespace coaxfit
 {
   /**
+   * The loads of operation that one body carries (all zero in the state of
+   * assembly): a uniform thermal eigenstrain alpha (T - T_assembly), the
+   * centrifugal body force rho omega^2 r, and pressures on its free
+   * cylindrical surfaces (its bore r = r_inner of a hollow body, its outer
+   * surface r = r_outer), never on the contact surface S.
+   */
+  struct BodyLoad
+  {
+    double thermal_strain = 0.; ///< alpha (T - T_assembly)
+    double omega_squared  = 0.; ///< (rad/s)^2
+    double inner_pressure = 0.; ///< MPa on the free bore
+    double outer_pressure = 0.; ///< MPa on the free outer surface
+
+    /** Whether any entry is not zero. */
+    bool
+    any() const
+    {
+      return thermal_strain != 0. || omega_squared != 0. || inner_pressure != 0.
+             || outer_pressure != 0.;
+    }
+  };
+
+  /**
    * The discretization of one axisymmetric linear elastic cylinder: its
    * Triangulation<2> in the (r, z) half section, FESystem(FE_Q(p)^2) for
    * (u_r, u_z), the r-weighted stiffness matrix with the hoop strain u_r/r,
@@ -42,12 +65,14 @@ namespace coaxfit
      * With @p reduced_volumetric_integration, the lambda part of the
      * stiffness is integrated with the p-point Gauss rule per direction
      * (selective reduced integration against volumetric locking), the
-     * 2 mu part with p + 1 points.
+     * 2 mu part with p + 1 points. The body carries @p load (its
+     * thermal strain enters the stresses of every field it writes).
      */
     BodyDiscretization(const BodyGeometry &geometry,
                        const Material     &material,
                        unsigned int        degree,
-                       bool reduced_volumetric_integration = false);
+                       bool            reduced_volumetric_integration = false,
+                       const BodyLoad &load = BodyLoad());
 
     /** Build the mesh, distribute DoFs, set constraints and sparsity. */
     void
@@ -56,6 +81,25 @@ namespace coaxfit
     /** Assemble the stiffness matrix and the interface weights. */
     void
     assemble_system();
+
+    /**
+     * The load vector of @p load (N per radian, homogeneous constraints
+     * applied): the thermal eigenstress C (alpha dT) I against the strains
+     * of the shape functions (its lambda part with the reduced rule where
+     * the stiffness has it), rho omega^2 r against u_r (Material/Density in
+     * kg/m^3, so rho omega^2 r is 1e-12 rho omega^2 r N/mm^3 with r in mm),
+     * and the pressures on the free bore and outer surface. Nothing acts on
+     * S: the load field of a free interface is the body's own answer.
+     */
+    Vector<double>
+    assemble_load_vector(const BodyLoad &load) const;
+
+    /** The load this body carries. */
+    const BodyLoad &
+    load() const
+    {
+      return body_load;
+    }
 
     /**
      * Write @p solution as VTU: displacement (mm), the stresses sigma_rr,
@@ -186,6 +230,7 @@ namespace coaxfit
     const BodyGeometry body_geometry;
     const Material     body_material;
     const bool         reduced_volumetric_integration;
+    const BodyLoad     body_load;
 
     Triangulation<2>          triangulation;
     const FESystem<2>         fe;

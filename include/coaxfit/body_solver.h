@@ -49,6 +49,14 @@ namespace coaxfit
                 const Vector<double>    &force);
 
     /**
+     * The field of the body under the load vector @p load alone, with a
+     * free contact surface (no contact force): the body's own answer to its
+     * loads of operation.
+     */
+    Vector<double>
+    solve_load_field(const Vector<double> &load);
+
+    /**
      * Make (or find in the cache) the factorization for the set of
      * prescribed points @p prescribed, so that later solves only
      * substitute.

@@ -29,6 +29,13 @@ namespace coaxfit
   BodyGeometry
   hub_geometry(const Parameters &parameters);
 
+  /**
+   * The loads of operation that the shaft (@p shaft) or the hub carries:
+   * its thermal strain, the rotation, its pressure.
+   */
+  BodyLoad
+  body_load(const Parameters &parameters, bool shaft);
+
   /** The discretization of the shaft (@p shaft) or the hub, not set up. */
   std::unique_ptr<BodyDiscretization>
   make_body(const Parameters &parameters, bool shaft);
@@ -107,10 +114,38 @@ namespace coaxfit
     PressureSummary
     pressure_summary() const;
 
+    /** The design figures of the current state (after solve()). */
+    FitDesign
+    state_design() const;
+
+    /**
+     * The nodal contact force of the two bodies (after setup_system()) for
+     * the pointwise radial interference @p interference (mm) and no loads
+     * (unilateral or bilateral contact), by the run's own method; throws
+     * SolverError if it does not converge. The problem is linear in the
+     * interference while the contact zone is fixed.
+     */
+    Vector<double>
+    contact_force_for(const Vector<double> &interference, bool unilateral);
+
+    /**
+     * How the free bodies' loads @p shaft_load, @p hub_load change the
+     * interference at each point: u1 - u2 on S (mm).
+     */
+    Vector<double>
+    interference_change(const BodyLoad &shaft_load, const BodyLoad &hub_load);
+
     /** Largest interface for which Interface operator = auto condenses. */
     static constexpr unsigned int max_condensed_points = 2000;
 
   private:
+    /**
+     * Each body's field under its loads of operation (free contact
+     * surface) and the contact interface with the interference they leave.
+     */
+    void
+    setup_loads();
+
     /** Whether Coupling/Interface operator (auto: by size) condenses. */
     bool
     use_condensed_operator() const;
@@ -119,9 +154,13 @@ namespace coaxfit
     UnilateralActiveSet::Update
     active_set_mode() const;
 
-    /** The staggered coupling with full or condensed operators. */
+    /**
+     * The solver of Solver/Method for the interface @p contact: the
+     * staggered coupling with full or condensed operators (made once), or
+     * the monolithic reference.
+     */
     std::unique_ptr<InterfaceSolver>
-    make_staggered_coupling();
+    make_solver(const ContactInterface &contact, bool unilateral);
 
     /**
      * The von Mises stresses at the end of the joint (hub bore, shaft
@@ -151,7 +190,8 @@ namespace coaxfit
     std::unique_ptr<InterfaceSolver>    coupling;
     std::unique_ptr<FitDesign>          design;
     Vector<double>                      shaft_field, hub_field;
-    TimerOutput                         timer;
+    Vector<double> shaft_load_field, hub_load_field; ///< loads alone
+    TimerOutput    timer;
   };
 } // namespace coaxfit
 

@@ -18,6 +18,13 @@ namespace coaxfit
    *
    * Vectors over the points are nodal contact forces (compression positive,
    * F_i = int_S p N_i r dz) or radial displacements u1 (shaft), u2 (hub).
+   *
+   * Loads of operation: each body's own answer to its loads with a free
+   * contact surface moves S by u1_load, u2_load. The bodies are linear, so
+   * the coupling solves for the contact answer alone (u1, u2: the
+   * displacements caused by the contact force) with the pointwise
+   * interference d_i = d + u1_load_i - u2_load_i; the total displacement is
+   * the sum. d_i <= 0 is a clearance at that point.
    */
   class ContactInterface
   {
@@ -29,6 +36,16 @@ namespace coaxfit
     ContactInterface(const BodyDiscretization &shaft,
                      const BodyDiscretization &hub,
                      double                    interference);
+
+    /**
+     * With the displacements @p u1_load, @p u2_load of S under the loads of
+     * operation (each body's own, free contact surface).
+     */
+    ContactInterface(const BodyDiscretization &shaft,
+                     const BodyDiscretization &hub,
+                     double                    interference,
+                     const Vector<double>     &u1_load,
+                     const Vector<double>     &u2_load);
 
     unsigned int
     n_points() const
@@ -50,19 +67,50 @@ namespace coaxfit
       return lumped_weights;
     }
 
-    /** Radial interference d (mm). */
+    /** Radial interference d (mm) of the drawing and the fit. */
     double
     interference() const
     {
       return d;
     }
 
-    /** The gap g = u2 - u1 - d at every point (mm; negative: penetration). */
+    /**
+     * The interference at point i under the loads of operation,
+     * d_i = d + u1_load_i - u2_load_i (mm).
+     */
+    double
+    interference(const unsigned int i) const
+    {
+      return d_load[i];
+    }
+
+    /** u_r of S under the loads of operation alone: shaft, hub. */
+    const Vector<double> &
+    load_displacement(const bool shaft) const
+    {
+      return shaft ? u1_load : u2_load;
+    }
+
+    /**
+     * The displacement that relative residuals are measured against:
+     * max(|d|, max_i |d_i|) (mm), at least 1e-12 of the joint radius.
+     */
+    double
+    displacement_scale() const
+    {
+      return scale;
+    }
+
+    /**
+     * The gap g = u2 - u1 - d_i at every point for the contact answers
+     * u1, u2 (mm; negative: penetration).
+     */
     Vector<double>
     gap(const Vector<double> &u1, const Vector<double> &u2) const;
 
     /**
-     * Relative displacement residual max_i r_i / d: r_i = |g_i| at points in
+     * Relative displacement residual max_i r_i / displacement_scale():
+     * r_i = |g_i| at points in
      * @p contact, the penetration -g_i at separated points (they may open).
      * NaN if not finite.
      */
@@ -99,6 +147,8 @@ namespace coaxfit
     double              d;
     std::vector<double> z_coordinates;
     Vector<double>      lumped_weights;
+    Vector<double>      u1_load, u2_load, d_load;
+    double              scale;
   };
 } // namespace coaxfit
 

@@ -277,18 +277,19 @@ namespace coaxfit
    */
   struct Parameters
   {
-    DrawingGeometry    drawing;    ///< `Geometry`: diameters, full lengths
-    FitParameters      fit;        ///< `Fit`
-    FitLimits          fit_limits; ///< the interference in use (derived)
-    GeometryParameters geometry;   ///< the model's half section (derived)
-    Material           shaft;      ///< material of D1 (shaft or tube)
-    Material           hub;        ///< material of D2 (hub)
-    DesignParameters   design;
-    MeshParameters     mesh;
-    SolverParameters   solver;
-    CouplingParameters coupling;
-    ContactParameters  contact;
-    OutputParameters   output;
+    DrawingGeometry     drawing;    ///< `Geometry`: diameters, full lengths
+    FitParameters       fit;        ///< `Fit`
+    FitLimits           fit_limits; ///< the interference in use (derived)
+    GeometryParameters  geometry;   ///< the model's half section (derived)
+    Material            shaft;      ///< material of D1 (shaft or tube)
+    Material            hub;        ///< material of D2 (hub)
+    DesignParameters    design;
+    OperationParameters operation; ///< `Operation`: loads in service
+    MeshParameters      mesh;
+    SolverParameters    solver;
+    CouplingParameters  coupling;
+    ContactParameters   contact;
+    OutputParameters    output;
 
     /** Name of the case: the parameter file's base name. */
     std::string case_name = "default";

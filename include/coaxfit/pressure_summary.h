@@ -29,7 +29,11 @@ namespace coaxfit
     double         mean;
     double         min, z_of_min;
     double         max, z_of_max;
-    double         lame;
+    /**
+     * Lame's pressure for the same radii (plane stress, equal lengths),
+     * with the loads of operation (Din7190; 0 where the joint opens).
+     */
+    double lame;
 
     PressureSummary(const Parameters       &parameters,
                     const ContactInterface &interface,

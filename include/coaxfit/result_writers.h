@@ -7,6 +7,7 @@
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/fit_design.h>
 #include <coaxfit/interface_solver.h>
+#include <coaxfit/operation_analysis.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/pressure_summary.h>
 
@@ -31,6 +32,7 @@ namespace coaxfit
     const PressureSummary               &pressure;
     const Complementarity               &complementarity;
     const FitDesign                     &design;
+    const OperationAnalysis             &operation;
     const std::map<std::string, double> &timing;   ///< wall times (s)
     const std::vector<std::string>      &warnings; ///< one line each
   };

@@ -124,6 +124,59 @@ namespace coaxfit
     }
   };
 
+  /**
+   * Subsection `Operation`: the state in service next to the state of
+   * assembly. Each body carries its own loads: a uniform temperature change
+   * from the assembly temperature (thermal eigenstrain), the centrifugal
+   * body force of the speed, and pressures on its free cylindrical
+   * surfaces. Temperatures in degrees C, speed in 1/min, pressures in MPa,
+   * the joining clearance in mm (diametral).
+   */
+  struct OperationParameters
+  {
+    double      assembly_temperature = 20.;
+    std::string shaft_temperature_text;   ///< empty: the assembly temperature
+    std::string hub_temperature_text;     ///< empty: the assembly temperature
+    double      speed               = 0.; ///< 1/min
+    double      shaft_bore_pressure = 0.; ///< MPa, on the shaft's bore
+    double      hub_outer_pressure  = 0.; ///< MPa, on the hub's outer surface
+    std::string joining_clearance_text = "auto"; ///< mm or auto
+
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Parse the entries given as text and check the ranges; InputError
+     * names the entry. @p joint_diameter (mm) scales the automatic joining
+     * clearance, @p solid_shaft refuses a bore pressure without a bore.
+     */
+    void
+    validate(double joint_diameter, bool solid_shaft) const;
+
+    /** Operating temperature of the shaft (degrees C). */
+    double
+    shaft_temperature() const;
+
+    /** Operating temperature of the hub (degrees C). */
+    double
+    hub_temperature() const;
+
+    /** Angular velocity omega = 2 pi n / 60 (rad/s). */
+    double
+    omega() const;
+
+    /**
+     * The diametral joining clearance (mm): the entry, or with auto DIN
+     * 7190's guide value 0.001 D_F for the joint diameter @p joint_diameter.
+     */
+    double
+    joining_clearance(double joint_diameter) const;
+
+    /** Whether any load of operation differs from the assembly state. */
+    bool
+    has_loads() const;
+  };
+
   /** The name of a fit case as written in a parameter file. */
   std::string
   to_string(FitCase value);

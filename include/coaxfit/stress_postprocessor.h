@@ -18,12 +18,16 @@ namespace coaxfit
    * then take their volumetric part from it instead of from the strain at
    * the point, whose spurious modes the reduced rule does not see (at
    * nu = 0.4999 they showed as stresses of +-5e4 MPa with FE_Q(1)).
+   *
+   * A body under a thermal eigenstrain alpha dT = @p thermal_strain is
+   * stressed only by the mechanical strain e - alpha dT I.
    */
   class StressPostprocessor : public DataPostprocessor<2>
   {
   public:
     explicit StressPostprocessor(const Material &material,
-                                 bool            volumetric_component = false);
+                                 bool            volumetric_component = false,
+                                 double          thermal_strain       = 0.);
 
     void
     evaluate_vector_field(
@@ -39,6 +43,7 @@ namespace coaxfit
   private:
     const Material material;
     const bool     volumetric_component;
+    const double   thermal_strain;
   };
 } // namespace coaxfit
 

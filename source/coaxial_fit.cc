@@ -232,6 +232,8 @@ namespace coaxfit
     // The contact answer plus each body's answer to its own loads.
     shaft_field += shaft_load_field;
     hub_field += hub_load_field;
+    // The work of this state, before the analysis of operation adds more.
+    statistics = coupling->statistics();
     return converged;
   }
 
@@ -422,12 +424,11 @@ namespace coaxfit
     std::vector<std::string> warning_list = parameters.input_warnings();
     for (const auto &list : {warnings(pressure), design->warnings(parameters)})
       warning_list.insert(warning_list.end(), list.begin(), list.end());
-    if (!operation->holds)
+    if (operation->has_loads && !operation->holds)
       warning_list.push_back(operation->verdict);
     print_report(pressure, complementarity, warning_list);
     print_design(out, parameters, *design);
-    if (operation->has_loads || parameters.shaft.density > 0.)
-      operation->print(out);
+    operation->print(out);
 
     std::map<std::string, double> timing;
     const RunResults              results{parameters,
@@ -437,6 +438,7 @@ namespace coaxfit
                              hub_field,
                              *interface,
                              *coupling,
+                             statistics,
                              pressure,
                              complementarity,
                              *design,

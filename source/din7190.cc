@@ -97,23 +97,26 @@ namespace coaxfit
 
 
   double
-  Din7190::closing(const double pressure, const double omega_squared) const
+  Din7190::opening(const double pressure,
+                   const double omega_squared,
+                   const bool   static_loads) const
   {
-    const Ring hub_ring(model.R1,
+    const double s = static_loads ? 1. : 0.;
+    const Ring   hub_ring(model.R1,
                         model.R2,
                         hub,
                         pressure,
-                        loads.hub_outer_pressure,
+                        s * loads.hub_outer_pressure,
                         omega_squared,
-                        loads.hub_thermal_strain);
-    const Ring shaft_ring(model.R0,
+                        s * loads.hub_thermal_strain);
+    const Ring   shaft_ring(model.R0,
                           model.R1,
                           shaft,
-                          loads.shaft_bore_pressure,
+                          s * loads.shaft_bore_pressure,
                           pressure,
                           omega_squared,
-                          loads.shaft_thermal_strain);
-    return model.d - (hub_ring.u(model.R1) - shaft_ring.u(model.R1));
+                          s * loads.shaft_thermal_strain);
+    return hub_ring.u(model.R1) - shaft_ring.u(model.R1);
   }
 
 
@@ -123,7 +126,7 @@ namespace coaxfit
   {
     // Linear in the pressure with the slope -R1 K (the compliance of the
     // pair): closing(p) = closing(0) - R1 K p.
-    const double left = closing(0., loads.omega_squared) + 0.5 * U_w - model.d;
+    const double left = 0.5 * U_w - opening(0., loads.omega_squared, true);
     return std::max(0., left / (model.R1 * K));
   }
 
@@ -132,9 +135,10 @@ namespace coaxfit
   double
   Din7190::loosening_omega() const
   {
-    const double at_rest = closing(0., 0.);
-    const double per_omega_squared
-      = closing(0., 1.) - at_rest; // linear in omega^2
+    // The interference left at rest, and what each (rad/s)^2 takes away
+    // (rotation alone: no cancellation against the interference).
+    const double at_rest           = model.d - opening(0., 0., true);
+    const double per_omega_squared = -opening(0., 1., false);
     if (at_rest <= 0.)
       return 0.;
     if (per_omega_squared >= 0.)

@@ -125,10 +125,11 @@ namespace coaxfit
   OperationAnalysis::compute_loosening_speed(const Parameters &parameters,
                                              CoaxialFit       &fit)
   {
-    if (!(parameters.shaft.density > 0. && parameters.hub.density > 0.))
+    // A figure of rotating joints: computed when Operation/Speed is given
+    // (the densities are then known, validate() asks for them).
+    if (!(parameters.operation.speed > 0.))
       {
-        loosening_note = "needs Material/Shaft/Density and "
-                         "Material/Hub/Density";
+        loosening_note = "the joint does not rotate: Operation/Speed = 0";
         return;
       }
     loosening_speed_din = speed_of(Din7190(parameters.geometry,
@@ -230,6 +231,36 @@ namespace coaxfit
 
 
   void
+  OperationAnalysis::print_joining(std::ostream &s) const
+  {
+    if (std::isnan(joining_temperature_hub)
+        && std::isnan(joining_temperature_shaft))
+      return; // no thermal expansion known
+    const auto temperature = [](const double T) {
+      std::ostringstream t;
+      if (std::isnan(T))
+        t << "- (no thermal expansion)";
+      else
+        t << std::fixed << std::setprecision(1) << T << " C";
+      return t.str();
+    };
+    s << std::setprecision(4) << "    joining (U_max " << joining_interference
+      << " mm + clearance " << joining_clearance
+      << " mm, DIN 7190): heat the hub to "
+      << temperature(joining_temperature_hub) << " or cool the shaft to "
+      << temperature(joining_temperature_shaft)
+      << (joining_temperature_shaft <= -273.15 ?
+            " (impossible: below absolute zero)" :
+          joining_temperature_shaft < -196. ?
+            " (below liquid nitrogen, -196 C)" :
+            "")
+      << '\n'
+      << std::defaultfloat;
+  }
+
+
+
+  void
   OperationAnalysis::print(std::ostream &out) const
   {
     std::ostringstream s;
@@ -248,6 +279,12 @@ namespace coaxfit
           s << "    " << std::left << std::setw(44) << what << std::right
             << std::setw(12) << figure(a) << std::setw(12) << figure(b) << '\n';
         };
+    if (!has_loads)
+      {
+        print_joining(s);
+        out << s.str();
+        return;
+      }
     s << "  operation:" << std::setw(50) << "assembly" << std::setw(12)
       << "in service" << '\n';
     row("joint pressure at z = 0 (MPa)",
@@ -277,11 +314,18 @@ namespace coaxfit
         operation.separated_length);
     if (loosening_note.empty())
       {
-        s << "    loosening speed (1/min): first point " << std::fixed
-          << std::setprecision(0) << figure(loosening_speed_first)
-          << ", whole joint " << figure(loosening_speed_whole)
-          << ", DIN 7190 (plane stress) " << figure(loosening_speed_din)
-          << '\n';
+        const auto rpm = [&](const double n) {
+          std::ostringstream f;
+          if (std::isinf(n))
+            f << "never";
+          else
+            f << std::fixed << std::setprecision(0) << n;
+          return f.str();
+        };
+        s << "    loosening speed (1/min): first point "
+          << rpm(loosening_speed_first) << ", whole joint "
+          << rpm(loosening_speed_whole) << ", DIN 7190 (plane stress) "
+          << rpm(loosening_speed_din) << '\n';
         s << "    (confirmed by solves: at the first speed min pressure "
           << figure(min_pressure_at_first) << " MPa, separated points 1 % "
           << "below " << separated_below_first << ", 1 % above "
@@ -290,16 +334,52 @@ namespace coaxfit
       }
     else
       s << "    loosening speed: not computed (" << loosening_note << ")\n";
-    s << std::fixed << std::setprecision(1) << "    joining (U_max "
-      << std::setprecision(4) << joining_interference << " mm + clearance "
-      << joining_clearance << " mm): heat the hub to " << std::setprecision(1)
-      << figure(joining_temperature_hub) << " C or cool the shaft to "
-      << figure(joining_temperature_shaft) << " C"
-      << (joining_temperature_shaft < -196. ?
-            " (below liquid nitrogen, -196 C)" :
-            "")
-      << "\n"
-      << std::defaultfloat << "    " << verdict << '\n';
+    print_joining(s);
+    s << "    " << verdict << '\n';
     out << s.str();
+  }
+
+
+
+  void
+  OperationAnalysis::print_markdown(std::ostream &out) const
+  {
+    // The console text, its table rows turned into Markdown rows.
+    std::ostringstream console;
+    print(console);
+    std::istringstream lines(console.str());
+    std::string        line;
+    bool               table = false;
+    while (std::getline(lines, line))
+      {
+        const auto first = line.find_first_not_of(' ');
+        if (first == std::string::npos)
+          continue;
+        line = line.substr(first);
+        if (line.rfind("operation:", 0) == 0)
+          {
+            out << "| | assembly | in service |\n|---|---:|---:|\n";
+            table = true;
+            continue;
+          }
+        // A table row: a label, then two figures after a run of spaces.
+        const auto gap2 = line.find_last_of(' ');
+        const auto end1 = line.find_last_not_of(' ', gap2);
+        const auto gap1 = line.find_last_of(' ', end1);
+        const auto end0 = line.find_last_not_of(' ', gap1);
+        if (table && gap1 != std::string::npos && end0 != std::string::npos
+            && gap1 - end0 > 1 && line.find("  ") != std::string::npos
+            && line.find("(1/min)") == std::string::npos)
+          {
+            out << "| " << line.substr(0, end0 + 1) << " | "
+                << line.substr(gap1 + 1, end1 - gap1) << " | "
+                << line.substr(gap2 + 1) << " |\n";
+            continue;
+          }
+        if (table)
+          out << '\n';
+        table = false;
+        out << line << "\n\n";
+      }
   }
 } // namespace coaxfit

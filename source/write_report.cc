@@ -101,7 +101,9 @@ namespace coaxfit
     for (const auto &zone : zones)
       out << "[" << design_figure(zone.first) << ", "
           << design_figure(zone.second) << "] mm ";
-    out << ".\n\n## Warnings\n\n";
+    out << ".\n\n## Operation\n\n";
+    results.operation.print_markdown(out);
+    out << "\n## Warnings\n\n";
     if (results.warnings.empty())
       out << "none\n";
     for (const std::string &w : results.warnings)

@@ -108,10 +108,10 @@ namespace coaxfit
     Json
     coupling_and_solver(const RunResults &results)
     {
-      const InterfaceSolver &solver     = results.solver;
-      const SolverStatistics statistics = solver.statistics();
-      const auto            &c          = results.parameters.coupling;
-      Json                   alpha      = Json::array();
+      const InterfaceSolver  &solver     = results.solver;
+      const SolverStatistics &statistics = results.statistics;
+      const auto             &c          = results.parameters.coupling;
+      Json                    alpha      = Json::array();
       for (const CouplingStep &s : solver.history())
         alpha.push_back(s.alpha);
       Json j;

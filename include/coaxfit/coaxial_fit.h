@@ -190,6 +190,7 @@ namespace coaxfit
     std::unique_ptr<InterfaceSolver>    coupling;
     std::unique_ptr<FitDesign>          design;
     Vector<double>                      shaft_field, hub_field;
+    SolverStatistics                    statistics;  ///< after solve()
     Vector<double> shaft_load_field, hub_load_field; ///< loads alone
     TimerOutput    timer;
   };

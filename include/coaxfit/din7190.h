@@ -123,12 +123,13 @@ namespace coaxfit
 
   private:
     /**
-     * The radial interference left between the rings at D_F/2 under the
-     * joint pressure @p pressure and the loads with @p omega_squared:
-     * d - (u_hub - u_shaft) (mm), linear in the pressure.
+     * How far the rings' surfaces at D_F/2 move apart, u_hub - u_shaft
+     * (mm), under the joint pressure @p pressure, rotation
+     * @p omega_squared and, if @p static_loads, the temperatures and
+     * pressures of operation; linear in each.
      */
     double
-    closing(double pressure, double omega_squared) const;
+    opening(double pressure, double omega_squared, bool static_loads) const;
 
     /** Radial and hoop stress of the shaft (or hub) ring at @p r. */
     CheckPoint

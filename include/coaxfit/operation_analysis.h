@@ -102,11 +102,22 @@ namespace coaxfit
     bool        holds = true;
     std::string verdict; ///< one line: why it holds or not
 
-    /** The console table of the two states and the figures above. */
+    /**
+     * The console table of the two states and the figures above (without
+     * loads only the joining temperatures).
+     */
     void
     print(std::ostream &out) const;
 
+    /** The same as a Markdown table and lines, for report.md. */
+    void
+    print_markdown(std::ostream &out) const;
+
   private:
+    /** The line of the joining temperatures. */
+    void
+    print_joining(std::ostream &out) const;
+
     void
     compute_loosening_speed(const Parameters &parameters, CoaxialFit &fit);
 

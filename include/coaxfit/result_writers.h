@@ -22,13 +22,15 @@ namespace coaxfit
   /** Everything a result writer may read about a finished run. */
   struct RunResults
   {
-    const Parameters                    &parameters;
-    const BodyDiscretization            &shaft;
-    const BodyDiscretization            &hub;
-    const Vector<double>                &shaft_field;
-    const Vector<double>                &hub_field;
-    const ContactInterface              &interface;
-    const InterfaceSolver               &solver;
+    const Parameters         &parameters;
+    const BodyDiscretization &shaft;
+    const BodyDiscretization &hub;
+    const Vector<double>     &shaft_field;
+    const Vector<double>     &hub_field;
+    const ContactInterface   &interface;
+    const InterfaceSolver    &solver;
+    /** The solver's work for this state (before any further analysis). */
+    const SolverStatistics              &statistics;
     const PressureSummary               &pressure;
     const Complementarity               &complementarity;
     const FitDesign                     &design;

@@ -421,6 +421,9 @@ namespace coaxfit
       TimerOutput::Scope scope(timer, "operation");
       operation = std::make_unique<OperationAnalysis>(parameters, *this);
     }
+    // The parts are pressed together at assembly, not in service.
+    design->press_in_force     = operation->assembly.press_in_force;
+    design->press_in_force_din = operation->assembly.press_in_force_din;
     std::vector<std::string> warning_list = parameters.input_warnings();
     for (const auto &list : {warnings(pressure), design->warnings(parameters)})
       warning_list.insert(warning_list.end(), list.begin(), list.end());

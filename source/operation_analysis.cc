@@ -56,6 +56,8 @@ namespace coaxfit
     s.axial_force_capacity     = design.axial_force_capacity;
     s.axial_force_capacity_din = design.axial_force_capacity_din;
     s.safety_slip              = design.safety_slip;
+    s.press_in_force           = design.press_in_force;
+    s.press_in_force_din       = design.press_in_force_din;
     s.safety_slip_din          = design.safety_slip_din;
     s.safety_yield_shaft       = design.safety_yield_shaft;
     s.safety_yield_hub         = design.safety_yield_hub;

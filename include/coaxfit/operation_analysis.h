@@ -54,6 +54,7 @@ namespace coaxfit
       double       axial_force_capacity     = unknown; ///< N
       double       axial_force_capacity_din = unknown; ///< N
       double       safety_slip = unknown, safety_slip_din = unknown;
+      double       press_in_force = unknown, press_in_force_din = unknown;
       double       safety_yield_shaft = unknown, safety_yield_hub = unknown;
       double       separated_length = 0.; ///< mm of the half joint
       bool         contact_lost     = false;

@@ -10,6 +10,7 @@
 
 #include <coaxfit/axisymmetric.h>
 #include <coaxfit/body_discretization.h>
+#include <coaxfit/displacement_postprocessor.h>
 #include <coaxfit/stress_postprocessor.h>
 
 #include <algorithm>
@@ -68,25 +69,35 @@ namespace coaxfit
   void
   BodyDiscretization::collect_interface_points()
   {
-    const FEValuesExtractors::Scalar u_r(0);
-    const IndexSet                   on_contact
-      = DoFTools::extract_boundary_dofs(dof_handler,
-                                        fe.component_mask(u_r),
-                                        {BoundaryId::contact});
     std::map<types::global_dof_index, Point<2>> support_points;
     DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
                                          dof_handler,
                                          support_points);
-    std::vector<std::pair<double, types::global_dof_index>> by_z;
-    for (const auto dof : on_contact)
-      by_z.emplace_back(support_points[dof][1], dof);
-    std::sort(by_z.begin(), by_z.end());
+    // The DoFs of one component on S, ordered by z (u_r and u_z share
+    // their support points, so both lists name the same points).
+    const auto on_contact = [&](const unsigned int component) {
+      const IndexSet dofs = DoFTools::extract_boundary_dofs(
+        dof_handler,
+        fe.component_mask(FEValuesExtractors::Scalar(component)),
+        {BoundaryId::contact});
+      std::vector<std::pair<double, types::global_dof_index>> by_z;
+      for (const auto dof : dofs)
+        by_z.emplace_back(support_points[dof][1], dof);
+      std::sort(by_z.begin(), by_z.end());
+      return by_z;
+    };
+    const auto radial = on_contact(0);
+    const auto axial  = on_contact(1);
+    AssertThrow(radial.size() == axial.size(),
+                ExcMessage("u_r and u_z differ in points on S"));
     interface_dofs.clear();
+    interface_axial_dofs.clear();
     interface_z_coordinates.clear();
-    for (const auto &[z, dof] : by_z)
+    for (unsigned int i = 0; i < radial.size(); ++i)
       {
-        interface_z_coordinates.push_back(z);
-        interface_dofs.push_back(dof);
+        interface_z_coordinates.push_back(radial[i].first);
+        interface_dofs.push_back(radial[i].second);
+        interface_axial_dofs.push_back(axial[i].second);
       }
     weights.reinit(interface_dofs.size());
   }
@@ -422,7 +433,9 @@ namespace coaxfit
 
   void
   BodyDiscretization::output_results(const Vector<double> &solution,
-                                     std::ostream         &out) const
+                                     std::ostream         &out,
+                                     const unsigned int    body_id,
+                                     const double          oversize) const
   {
     for (const double value : solution)
       if (!std::isfinite(value))
@@ -433,17 +446,18 @@ namespace coaxfit
     if (reduced_volumetric_integration)
       volumetric_field(solution, dof_handler_out, field);
 
-    const StressPostprocessor postprocessor(body_material,
-                                            reduced_volumetric_integration,
-                                            body_load.thermal_strain);
-    DataOut<2>                data_out;
-    std::vector<std::string>  names(2, "displacement");
+    const AssembledDisplacement assembled("displacement_mm", oversize);
+    const StressPostprocessor   stresses(body_material,
+                                       reduced_volumetric_integration,
+                                       body_load.thermal_strain);
+    DataOut<2>                  data_out;
+    std::vector<std::string>    names(2, "elastic_displacement_mm");
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(2,
                      DataComponentInterpretation::component_is_part_of_vector);
     if (reduced_volumetric_integration)
       {
-        names.emplace_back("volumetric_stress");
+        names.emplace_back("volumetric_stress_MPa");
         interpretation.push_back(
           DataComponentInterpretation::component_is_scalar);
       }
@@ -452,13 +466,31 @@ namespace coaxfit
     const Vector<double> &data
       = reduced_volumetric_integration ? field : solution;
     data_out.attach_dof_handler(handler);
+    // The assembled displacement first: ParaView's Warp By Vector takes the
+    // first vector array.
+    data_out.add_data_vector(data, assembled);
     data_out.add_data_vector(data,
                              names,
                              DataOut<2>::type_dof_data,
                              interpretation);
-    data_out.add_data_vector(data, postprocessor);
+    data_out.add_data_vector(data, stresses);
+    Vector<float> body(triangulation.n_active_cells());
+    body = static_cast<float>(body_id);
+    data_out.add_data_vector(body, "body_id", DataOut<2>::type_cell_data);
     data_out.build_patches(fe.degree);
 
+    DataOutBase::VtkFlags flags;
+    flags.print_date_and_time = false;
+    for (const std::string name : {"displacement_mm",
+                                   "elastic_displacement_mm",
+                                   "volumetric_stress_MPa",
+                                   "sigma_rr_MPa",
+                                   "sigma_zz_MPa",
+                                   "sigma_tt_MPa",
+                                   "sigma_rz_MPa",
+                                   "von_Mises_MPa"})
+      flags.physical_units[name] = name.substr(name.rfind('_') + 1);
+    data_out.set_flags(flags);
     data_out.write_vtu(out);
   }
 } // namespace coaxfit

@@ -45,7 +45,11 @@ namespace coaxfit
   std::vector<std::string>
   StressPostprocessor::get_names() const
   {
-    return {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz", "von_Mises"};
+    return {"sigma_rr_MPa",
+            "sigma_zz_MPa",
+            "sigma_tt_MPa",
+            "sigma_rz_MPa",
+            "von_Mises_MPa"};
   }
 
 

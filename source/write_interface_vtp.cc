@@ -1,5 +1,6 @@
 #include <coaxfit/result_writers.h>
 
+#include <array>
 #include <fstream>
 
 namespace coaxfit
@@ -14,26 +15,61 @@ namespace coaxfit
     const InterfaceSolver  &solver    = results.solver;
     const unsigned int      n         = interface.n_points();
     const Vector<double> gap = interface.gap(solver.u_shaft(), solver.u_hub());
-    const auto array         = [&](const std::string &array_name, auto value) {
+    // Written in full precision: the surfaces meet to round-off.
+    out.precision(17);
+
+    // The total displacement (u_r, u_z) of each body's surface point i:
+    // the body's own field (contact answer plus loads of operation), the
+    // shaft's plus its oversize d (it is made larger than the mesh at the
+    // joint radius, see AssembledDisplacement).
+    const auto surface = [&](const bool shaft, const unsigned int i) {
+      const BodyDiscretization &body = shaft ? results.shaft : results.hub;
+      const Vector<double>     &field
+        = shaft ? results.shaft_field : results.hub_field;
+      return std::array<double, 2>{{field[body.get_interface_dofs()[i]]
+                                      + (shaft ? interface.interference() : 0.),
+                                    field[body.get_interface_axial_dofs()[i]]}};
+    };
+    const auto scalar =
+      [&](const std::string &array_name, const std::string &unit, auto value) {
+        out << "<DataArray type=\"Float64\" Name=\"" << array_name << '"'
+            << (unit.empty() ? "" : " units=\"" + unit + '"')
+            << " format=\"ascii\">\n";
+        for (unsigned int i = 0; i < n; ++i)
+          out << value(i) << (i + 1 < n ? ' ' : '\n');
+        out << "</DataArray>\n";
+      };
+    const auto vector = [&](const std::string &array_name, const bool shaft) {
       out << "<DataArray type=\"Float64\" Name=\"" << array_name
-          << "\" format=\"ascii\">\n";
+          << "\" units=\"mm\" NumberOfComponents=\"3\" format=\"ascii\">\n";
       for (unsigned int i = 0; i < n; ++i)
-        out << value(i) << (i + 1 < n ? ' ' : '\n');
+        {
+          const auto u = surface(shaft, i);
+          out << u[0] << ' ' << u[1] << " 0\n";
+        }
       out << "</DataArray>\n";
     };
+
     out << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"PolyData\" version=\"0.1\" "
            "byte_order=\"LittleEndian\">\n<PolyData>\n"
         << "<Piece NumberOfPoints=\"" << n
         << "\" NumberOfVerts=\"0\" NumberOfLines=\"1\" "
            "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-        << "<PointData Scalars=\"contact_pressure\">\n";
-    array("contact_pressure",
-          [&](unsigned int i) { return results.pressure.pressure[i]; });
-    array("gap", [&](unsigned int i) { return gap[i]; });
-    array("contact_status", [&](unsigned int i) {
+        << "<PointData Scalars=\"contact_pressure_MPa\" "
+           "Vectors=\"displacement_mm\">\n";
+    // The hub's bore, in place; the shaft's surface meets it where the
+    // two are in contact.
+    vector("displacement_mm", false);
+    vector("shaft_displacement_mm", true);
+    scalar("contact_pressure_MPa", "MPa", [&](unsigned int i) {
+      return results.pressure.pressure[i];
+    });
+    scalar("gap_mm", "mm", [&](unsigned int i) { return gap[i]; });
+    scalar("contact_status", "", [&](unsigned int i) {
       return solver.get_active_set().in_contact()[i] ? 1. : 0.;
     });
+    scalar("body_id", "", [](unsigned int) { return 2.; });
     out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
            "NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (unsigned int i = 0; i < n; ++i)

@@ -1,6 +1,7 @@
 #include <coaxfit/result_writers.h>
 
 #include <fstream>
+#include <utility>
 
 namespace coaxfit
 {
@@ -13,10 +14,14 @@ namespace coaxfit
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
            "version=\"0.1\" byte_order=\"LittleEndian\">\n"
            "<Collection>\n";
+    // Named blocks (ParaView 5.11's reader shows the names).
     unsigned int part = 0;
-    for (const std::string file : {"shaft.vtu", "hub.vtu", "interface.vtp"})
+    for (const auto &[block, file] :
+         {std::pair<const char *, const char *>{"shaft", "shaft.vtu"},
+          {"hub", "hub.vtu"},
+          {"contact_surface", "interface.vtp"}})
       out << "<DataSet timestep=\"0\" group=\"\" part=\"" << part++
-          << "\" file=\"" << file << "\"/>\n";
+          << "\" name=\"" << block << "\" file=\"" << file << "\"/>\n";
     out << "</Collection>\n</VTKFile>\n";
     close_result_file(out, directory + "/" + name);
     return name + ": open this one in ParaView";

@@ -22,8 +22,15 @@ namespace coaxfit
     std::ofstream             out  = open_result_file(file);
     try
       {
+        // The shaft is made larger than its mesh by d (radially): drawn
+        // in its assembled place by displacement_mm.
+        const double oversize = shaft ? results.interface.interference()
+                                          / results.parameters.geometry.R1 :
+                                        0.;
         body.output_results(shaft ? results.shaft_field : results.hub_field,
-                            out);
+                            out,
+                            shaft ? 0 : 1,
+                            oversize);
       }
     catch (const ExceptionBase &) // deal.II's ExcIO on a failed stream
       {

@@ -104,9 +104,9 @@ for degree, integration in [(1, "full"), (1, "reduced"), (2, "full"), (2, "reduc
     else:
         p = s["pressure"]["lame"]
         shaft = os.path.join(keep, "shaft.vtu")
-        err = max(max(abs(x + p) for x in vtu_field(shaft, "sigma_rr")),
-                  max(abs(x + p) for x in vtu_field(shaft, "sigma_tt")),
-                  max(abs(x) for x in vtu_field(shaft, "sigma_zz"))) / p
+        err = max(max(abs(x + p) for x in vtu_field(shaft, "sigma_rr_MPa")),
+                  max(abs(x + p) for x in vtu_field(shaft, "sigma_tt_MPa")),
+                  max(abs(x) for x in vtu_field(shaft, "sigma_zz_MPa"))) / p
         limit = ""
         if integration == "full" and degree == 1:
             limit = "volumetric locking"

@@ -102,13 +102,24 @@ namespace coaxfit
     }
 
     /**
-     * Write @p solution as VTU: displacement (mm), the stresses sigma_rr,
-     * sigma_zz, sigma_tt (hoop), sigma_rz and von Mises (MPa), and with
-     * reduced integration the volumetric stress, to @p out (the caller owns
-     * the file and checks that it was written).
+     * Write @p solution as VTU to @p out (the caller owns the file and
+     * checks that it was written). Every name carries its unit, which is
+     * also attached to the array as its `units` attribute:
+     * displacement_mm, the displacement that shows the assembled part when
+     * ParaView warps the mesh by it: @p solution plus @p oversize r e_r
+     * (the shaft is made larger than the mesh at the joint radius by the
+     * radial interference d, so oversize = d / R_F for it and 0 for the
+     * hub); elastic_displacement_mm, @p solution itself (what the strains
+     * come from); the stresses sigma_rr_MPa, sigma_zz_MPa, sigma_tt_MPa
+     * (hoop), sigma_rz_MPa, von_Mises_MPa; with reduced integration
+     * volumetric_stress_MPa; and body_id = @p body_id on every cell
+     * (0 shaft, 1 hub).
      */
     void
-    output_results(const Vector<double> &solution, std::ostream &out) const;
+    output_results(const Vector<double> &solution,
+                   std::ostream         &out,
+                   unsigned int          body_id  = 0,
+                   double                oversize = 0.) const;
 
     /**
      * The interface values of a field @p solution solved for the data
@@ -149,6 +160,13 @@ namespace coaxfit
     get_interface_dofs() const
     {
       return interface_dofs;
+    }
+
+    /** The DoF of u_z at each interface point (same order). */
+    const std::vector<types::global_dof_index> &
+    get_interface_axial_dofs() const
+    {
+      return interface_axial_dofs;
     }
 
     const BodyGeometry &
@@ -240,6 +258,7 @@ namespace coaxfit
     SparseMatrix<double>      stiffness_matrix;
 
     std::vector<types::global_dof_index> interface_dofs;
+    std::vector<types::global_dof_index> interface_axial_dofs;
     std::vector<double>                  interface_z_coordinates;
     Vector<double>                       weights;
   };

@@ -1,0 +1,40 @@
+#ifndef coaxfit_displacement_postprocessor_h
+#define coaxfit_displacement_postprocessor_h
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+namespace coaxfit
+{
+  using namespace dealii;
+
+  /**
+   * The displacement that draws a body in its assembled place when ParaView
+   * warps the mesh by it (Warp By Vector): u + oversize r e_r (mm).
+   *
+   * Both bodies are meshed at the joint radius R_F, but the shaft is made
+   * larger than that by the radial interference d: its unassembled shape is
+   * the mesh scaled radially by 1 + d / R_F. Its elastic displacement u is
+   * measured from that shape, so warping the mesh by u alone draws a false
+   * gap of d along the whole joint. Adding oversize r e_r with
+   * oversize = d / R_F (0 for the hub) moves the shaft's surface to
+   * R_F + d + u_1 = R_F + u_2 where the bodies touch: the warped bodies meet
+   * at the joint and open only where they separate. The axis (r = 0) does
+   * not move.
+   */
+  class AssembledDisplacement : public DataPostprocessorVector<2>
+  {
+  public:
+    /** @p name of the output vector, @p oversize = d / R_F (or 0). */
+    AssembledDisplacement(const std::string &name, double oversize);
+
+    void
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<2> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override;
+
+  private:
+    const double oversize;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,107 @@
+// What a ParaView user sees, checked with ParaView's own reader (pvpython
+// from Debian's paraview package, installed by .ci/build):
+// - the equal-length Lame case: solution.pvd has the named blocks shaft,
+//   hub, contact_surface; every array carries its unit (in its name and as
+//   the units attribute); the pressure is Lame's 187.5 MPa, the hub's hoop
+//   stress at the bore 312.5 MPa, the solid shaft's sigma_rr = sigma_tt =
+//   -187.5 MPa; the bodies warped by displacement_mm meet at the joint
+//   (before, the shaft lacked its oversize d and a false gap of d showed);
+// - variant 14 (coarse), whose tube separates at its ends: the warped
+//   surfaces meet where in contact and open by the gap where separated;
+// - tools/paraview/view.py draws both pictures (PNG signature, size, and
+//   enough bytes to hold a drawing, not an empty frame).
+
+#include "run_executable.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace
+{
+  const std::string source_dir = COAXFIT_SOURCE_DIR;
+
+  /** pvpython with a virtual display where there is none. */
+  std::string
+  pvpython()
+  {
+    return std::getenv("DISPLAY") ? "pvpython" : "xvfb-run -a pvpython";
+  }
+
+  /** Run coaxfit on @p prm with @p settings into @p directory. */
+  bool
+  run_case(const std::string &directory,
+           const std::string &prm,
+           const std::string &settings)
+  {
+    std::filesystem::remove_all(directory);
+    const coaxfit_test::RunResult r
+      = coaxfit_test::run_coaxfit(directory,
+                                  settings + " " + source_dir + "/" + prm);
+    std::cout << prm << ": exit code " << r.exit_code << '\n';
+    return r.exit_code == 0;
+  }
+
+  /** Print the checks of tests/paraview_check.py on @p directory. */
+  void
+  check(const std::string &directory, const std::string &kind)
+  {
+    const coaxfit_test::RunResult r = coaxfit_test::run_command(
+      "timeout 300 " + pvpython() + " " + source_dir
+      + "/tests/paraview_check.py " + directory + " " + kind + " 2>&1");
+    std::cout << r.message << "paraview_check.py: exit code " << r.exit_code
+              << "\n\n";
+  }
+
+  /** PNG signature, width and height of @p file; its size in bytes. */
+  void
+  describe_png(const std::string &file)
+  {
+    std::ifstream in(file, std::ios::binary);
+    unsigned char header[24] = {};
+    in.read(reinterpret_cast<char *>(header), sizeof(header));
+    const bool signature = in && header[0] == 0x89 && header[1] == 'P'
+                           && header[2] == 'N' && header[3] == 'G';
+    const auto big_endian = [&](const unsigned int at) {
+      return (std::uint32_t(header[at]) << 24)
+             | (std::uint32_t(header[at + 1]) << 16)
+             | (std::uint32_t(header[at + 2]) << 8) | header[at + 3];
+    };
+    const auto bytes
+      = std::filesystem::exists(file) ? std::filesystem::file_size(file) : 0;
+    std::cout << std::filesystem::path(file).filename().string() << ": PNG "
+              << (signature ? "yes" : "NO") << ", " << big_endian(16) << " x "
+              << big_endian(20)
+              << ", more than 20 kB: " << (bytes > 20000 ? "yes" : "NO")
+              << '\n';
+  }
+} // namespace
+
+
+int
+main()
+{
+  if (coaxfit_test::run_command("command -v pvpython").exit_code != 0)
+    {
+      std::cout << "pvpython not found: install Debian's paraview\n";
+      return 1;
+    }
+  const std::string settings = "--set 'Output/Print timing=false'";
+  if (run_case("lame", "tests/lame_run.prm", settings))
+    check("lame", "LAME");
+  if (run_case("separating",
+               "prm/variant_14.prm",
+               settings + " --set 'Mesh/Global refinements=0'"))
+    {
+      check("separating", "SEPARATING");
+      std::filesystem::remove_all("views");
+      const coaxfit_test::RunResult r = coaxfit_test::run_command(
+        "timeout 300 " + pvpython() + " " + source_dir
+        + "/tools/paraview/view.py separating --png-dir views 2>&1");
+      std::cout << "view.py: exit code " << r.exit_code << '\n';
+      for (const std::string name : {"section.png", "part_3d.png"})
+        describe_png("views/" + name);
+    }
+}

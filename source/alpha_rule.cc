@@ -33,6 +33,20 @@ namespace coaxfit
 
 
 
+  void
+  FixedAlpha::seed(const double)
+  {}
+
+
+
+  bool
+  FixedAlpha::adaptive() const
+  {
+    return false;
+  }
+
+
+
   double
   FixedAlpha::alpha(const unsigned int) const
   {
@@ -67,6 +81,22 @@ namespace coaxfit
   WinklerAlpha::estimated() const
   {
     return has_estimate;
+  }
+
+
+
+  void
+  WinklerAlpha::seed(const double alpha)
+  {
+    value = alpha;
+  }
+
+
+
+  bool
+  WinklerAlpha::adaptive() const
+  {
+    return true;
   }
 
 
@@ -151,6 +181,15 @@ namespace coaxfit
         if (denominator > 0. && std::isfinite(denominator))
           values[i] = std::clamp(beta * u2 / denominator, 1e-6, 1. - 1e-6);
       }
+  }
+
+
+
+  void
+  PointwiseAlpha::seed(const double alpha)
+  {
+    WinklerAlpha::seed(alpha);
+    std::fill(values.begin(), values.end(), alpha);
   }
 
 

@@ -30,6 +30,10 @@ namespace coaxfit
     , tolerance(parameters.tolerance)
     , max_steps(parameters.max_steps)
     , active_set_tolerance(std::max(active_set_tolerance, parameters.tolerance))
+    , initial_active_set_tolerance(
+        std::max(active_set_tolerance, parameters.tolerance))
+    , tolerance_floor(parameters.tolerance)
+    , history_on_change(parameters.history_on_change)
   {}
 
 
@@ -79,11 +83,28 @@ namespace coaxfit
               < active_set_tolerance
             && last_traction_mismatch < active_set_tolerance))
       {
+        const std::vector<bool> before = active_set.in_contact();
         const bool changed  = active_set.update(force, interface.gap(u1, u2));
         active_set_verified = !changed;
         if (changed)
           {
-            accelerator->restart();
+            // Back to flags seen before: the updates cycle; take them from
+            // better converged states from now on.
+            if (!visited_sets.insert(active_set.in_contact()).second)
+              active_set_tolerance
+                = std::max(tolerance_floor, 1e-2 * active_set_tolerance);
+            if (history_on_change == HistoryOnChange::restart)
+              accelerator->restart();
+            else if (history_on_change != HistoryOnChange::keep)
+              {
+                std::vector<bool> flipped(before.size());
+                for (unsigned int i = 0; i < before.size(); ++i)
+                  flipped[i] = before[i] != active_set.in_contact()[i];
+                if (history_on_change == HistoryOnChange::filter)
+                  accelerator->forget_points(flipped);
+                else
+                  accelerator->keep_model(flipped);
+              }
             // Each outer update starts a new inner iteration; in the
             // paper's every-step mode changes are part of the iteration.
             if (active_set.update_mode()
@@ -111,6 +132,8 @@ namespace coaxfit
     // traction free in both bodies.
     concurrently([&]() { shaft.solve(contact, u_shaft, zero, u1, f1); },
                  [&]() { hub.solve(contact, u_hub, zero, u2, f2); });
+    if (history_rows.size() == 1 && rule->adaptive())
+      seed_alpha(u_shaft, u_hub, f1, f2);
 
     for (unsigned int i = 0; i < n; ++i)
       force[i] = f1[i] + rule->alpha(i) * (f2[i] - f1[i]);
@@ -141,6 +164,48 @@ namespace coaxfit
        interface.relative_gap_residual(u1, u2, active_set.in_contact()),
        last_traction_mismatch,
        active_set.n_separated()});
+  }
+
+
+
+  void
+  StaggeredCoupling::seed_alpha(const Vector<double> &u_shaft,
+                                const Vector<double> &u_hub,
+                                Vector<double>       &f1,
+                                Vector<double>       &f2)
+  {
+    // The first Dirichlet step follows the zero Neumann step (u1 = u2 = 0),
+    // so it prescribes -(1 - alpha) d_i to the shaft and alpha d_i to the
+    // hub: the bodies' answers measure their compliances before any alpha
+    // is known, k = sum |u F| / sum F^2/w (the energy-weighted Winkler
+    // compliance), and the Winkler alpha k2 / (k1 + k2), formula (4.20), is
+    // exact for a Winkler pair. The bodies are linear and the prescribed
+    // displacements proportional to d_i, so the step with that alpha is the
+    // step taken, rescaled: no further solve. Without it a hub or shaft much
+    // softer than the other gets a first force off by the ratio of the
+    // stiffnesses (1e3 for E ratios of 1e4) and the iteration fails.
+    const double alpha0 = rule->representative_alpha();
+    double       work1 = 0., work2 = 0., load1 = 0., load2 = 0.;
+    for (unsigned int i = 0; i < f1.size(); ++i)
+      {
+        work1 += std::abs(u_shaft[i] * f1[i]);
+        work2 += std::abs(u_hub[i] * f2[i]);
+        load1 += f1[i] * f1[i] / interface.weights()[i];
+        load2 += f2[i] * f2[i] / interface.weights()[i];
+      }
+    if (!(load1 > 0.) || !(load2 > 0.) || !(work1 > 0.) || !(work2 > 0.)
+        || !std::isfinite(work1 + work2 + load1 + load2))
+      return; // no contact point, or nothing prescribed: keep alpha
+    const double k1    = work1 / load1;
+    const double k2    = work2 / load2;
+    const double alpha = std::clamp(k2 / (k1 + k2), 1e-9, 1. - 1e-9);
+    const double c1    = (1. - alpha) / (1. - alpha0);
+    const double c2    = alpha / alpha0;
+    u1 *= c1;
+    f1 *= c1;
+    u2 *= c2;
+    f2 *= c2;
+    rule->seed(alpha);
   }
 
 
@@ -179,6 +244,24 @@ namespace coaxfit
 
 
 
+  bool
+  StaggeredCoupling::grew(const bool neumann, const unsigned int window) const
+  {
+    std::vector<double> same_kind;
+    for (auto it = history_rows.rbegin();
+         it != history_rows.rend() && same_kind.size() <= window;
+         ++it)
+      if (it->neumann == neumann)
+        same_kind.push_back(neumann ? it->displacement_mismatch :
+                                      it->traction_mismatch);
+    return same_kind.size() > window
+           && std::is_sorted(same_kind.rbegin(),
+                             same_kind.rend(),
+                             [](double a, double b) { return a <= b; });
+  }
+
+
+
   std::string
   StaggeredCoupling::divergence_reason() const
   {
@@ -205,10 +288,14 @@ namespace coaxfit
              ++it)
           if (it->neumann == neumann)
             same_kind.push_back(residual(*it));
+        // An accelerator's sequence is judged by both residuals: after a
+        // restart (a change of the contact zone) its first steps may trade
+        // one mismatch for the other while the other still falls.
         if (same_kind.size() > window
             && std::is_sorted(same_kind.rbegin(),
                               same_kind.rend(),
-                              [](double a, double b) { return a <= b; }))
+                              [](double a, double b) { return a <= b; })
+            && (!accelerated || grew(!neumann, window)))
           {
             s << "the " << (neumann ? "displacement" : "traction")
               << " mismatch grew in each of the last " << window
@@ -269,9 +356,10 @@ namespace coaxfit
             << "improving at step " << last.step << " (" << reason
             << "): the mismatches reached |du|/d = " << best_displacement
             << " and |dp|/p = " << best_traction
-            << ", the round-off level of this problem (thin walls give "
-            << "cells of large aspect ratio and an ill-conditioned "
-            << "interface problem); set Coupling/Tolerance above " << 2. * floor
+            << ", the round-off level of this problem (the forces are "
+            << "differences of large nodal reactions; thin walls, with cells "
+            << "of large aspect ratio, raise that level); set "
+            << "Coupling/Tolerance above " << 2. * floor
             << " or use fewer Mesh/Radial cells.";
         throw SolverError(msg.str());
       }
@@ -279,9 +367,18 @@ namespace coaxfit
         << " with Coupling/Alpha rule = " << rule->name()
         << " and Accelerator = " << accelerator->name()
         << ", alpha = " << std::setprecision(4) << rule->representative_alpha()
-        << ": " << reason << "; " << suggested_alpha_range()
-        << " (a Winkler estimate; thin walls can leave no convergent "
-        << "constant alpha: then use Coupling/Alpha controller = iqn-ils).";
+        << ": " << reason << "; ";
+    // Advice that fits what ran: a constant alpha can be changed or
+    // accelerated; an accelerated run that fails has the monolithic solver
+    // left (the same discrete problem, solved at once).
+    if (accelerator->name() == "iqn-ils")
+      msg << "the quasi-Newton iteration could not recover; solve this "
+          << "scene with Solver/Method = monolithic ("
+          << suggested_alpha_range() << ").";
+    else
+      msg << suggested_alpha_range()
+          << " (a Winkler estimate; thin walls can leave no convergent "
+          << "constant alpha: then use Coupling/Alpha controller = iqn-ils).";
     throw SolverError(msg.str());
   }
 
@@ -316,6 +413,8 @@ namespace coaxfit
     u1.reinit(n);
     u2.reinit(n);
     history_rows.clear();
+    active_set_tolerance       = initial_active_set_tolerance;
+    visited_sets               = {active_set.in_contact()};
     has_converged              = false;
     last_displacement_mismatch = std::numeric_limits<double>::infinity();
     last_traction_mismatch     = std::numeric_limits<double>::infinity();

@@ -178,6 +178,12 @@ add("bad alpha (variant 13, fixed 0.5)", "exit 2, one-line message, no NaN/Inf i
     and not nan_files)
 subprocess.run(["rm", "-rf", out])
 
+# The stiffness and geometry family (contrast_family.py): E_shaft/E_hub
+# 1e-4 to 1e4, solid to thin shafts, thin to thick hubs, default settings,
+# against the monolithic solver.
+from contrast_family import run_family  # noqa: E402
+run_family(add)
+
 header = ["case", "check", "figure", "result"]
 write_csv(os.path.join(HERE, "stress.csv"), header, rows)
 with open(os.path.join(HERE, "stress_table.md"), "w") as f:

@@ -43,6 +43,26 @@ namespace coaxfit
     virtual void
     restart()
       = 0;
+
+    /**
+     * The map changed at the points flagged in @p changed only: forget what
+     * the history says about them and keep the rest.
+     */
+    virtual void
+    forget_points(const std::vector<bool> &changed)
+      = 0;
+
+    /**
+     * The map changed at the points flagged in @p changed: start a new
+     * history but keep what the old one learned about the map as a prior
+     * (where the accelerator has such a model; else restart()).
+     */
+    virtual void
+    keep_model(const std::vector<bool> &changed)
+    {
+      (void)changed;
+      restart();
+    }
   };
 
   /** The plain iteration x_{k+1} = G(x_k). */
@@ -57,6 +77,9 @@ namespace coaxfit
 
     void
     restart() override;
+
+    void
+    forget_points(const std::vector<bool> &changed) override;
   };
 
   /**
@@ -77,6 +100,10 @@ namespace coaxfit
 
     void
     restart() override;
+
+    /** Zeroes the changed entries of the last residual, keeps omega. */
+    void
+    forget_points(const std::vector<bool> &changed) override;
 
   private:
     const double   initial_omega;
@@ -106,9 +133,43 @@ namespace coaxfit
     void
     restart() override;
 
+    /**
+     * Zeroes the rows of the changed points in every stored residual and
+     * output: the least-squares model then fits the unchanged points only
+     * and leaves the changed ones to the plain step.
+     */
+    void
+    forget_points(const std::vector<bool> &changed) override;
+
+    /**
+     * The inverse Jacobian model J = J_prior - (W + J_prior V)(V^T V)^-1 V^T
+     * of the current history becomes the prior of the next (rows and
+     * columns of the changed points zeroed), and the history restarts.
+     * With a prior the step is x_{k+1} = G(x_k) + W c + J_prior (r_k + V c)
+     * (IQN-IMVJ, Lindner et al. 2015); without one it is IQN-ILS.
+     */
+    void
+    keep_model(const std::vector<bool> &changed) override;
+
   private:
+    /**
+     * The filtered least-squares model of the history for the residual
+     * @p r: the kept difference columns V and W and the coefficients c of
+     * min |V c + r|. Empty if the history has no usable column.
+     */
+    void
+    fit(const Vector<double>        &r,
+        std::vector<Vector<double>> &v,
+        std::vector<Vector<double>> &w,
+        std::vector<double>         &c) const;
+
+    /** Add J @p r, the model's step for the residual @p r, to @p out. */
+    void
+    add_model_step(const Vector<double> &r, Vector<double> &out) const;
+
     const unsigned int          max_columns;
     const double                filter;
+    std::vector<double>         prior; ///< J_prior, n x n row-major or empty
     std::vector<Vector<double>> residuals; ///< r_k, oldest first
     std::vector<Vector<double>> outputs;   ///< G(x_k), oldest first
   };

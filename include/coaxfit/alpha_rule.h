@@ -48,6 +48,19 @@ namespace coaxfit
     virtual bool
     estimated() const = 0;
 
+    /**
+     * Replace the initial alpha by @p alpha, the Winkler alpha measured in
+     * the first Dirichlet step, before any estimate of the rule's own
+     * (the fixed rule keeps the user's alpha).
+     */
+    virtual void
+    seed(double alpha)
+      = 0;
+
+    /** Whether seed() changes alpha (all adaptive rules). */
+    virtual bool
+    adaptive() const = 0;
+
     /** Alpha at interface point @p i. */
     virtual double
     alpha(unsigned int i) const = 0;
@@ -71,6 +84,13 @@ namespace coaxfit
 
     bool
     estimated() const override;
+
+    /** Keeps Coupling/Alpha: a fixed alpha is the user's choice. */
+    void
+    seed(double alpha) override;
+
+    bool
+    adaptive() const override;
 
     double
     alpha(unsigned int i) const override;
@@ -103,6 +123,12 @@ namespace coaxfit
     bool
     estimated() const override;
 
+    void
+    seed(double alpha) override;
+
+    bool
+    adaptive() const override;
+
   private:
     bool has_estimate = false;
   };
@@ -129,6 +155,9 @@ namespace coaxfit
 
     void
     update(const NeumannState &state) override;
+
+    void
+    seed(double alpha) override;
 
     double
     alpha(unsigned int i) const override;

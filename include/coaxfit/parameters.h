@@ -187,6 +187,18 @@ namespace coaxfit
     condensed
   };
 
+  /**
+   * What the accelerator keeps of its history when the set of contact
+   * points changes (the fixed-point map changes at those points).
+   */
+  enum class HistoryOnChange
+  {
+    restart, ///< forget everything
+    keep,    ///< keep every column as it is
+    filter,  ///< keep the columns, with the changed points' rows removed
+    model    ///< keep the model built so far as the prior of the new one
+  };
+
   /** Subsection `Coupling`: the staggered process. */
   struct CouplingParameters
   {
@@ -201,6 +213,7 @@ namespace coaxfit
     unsigned int          iqn_columns        = 50;
     double                iqn_filter         = 1e-10;
     InterfaceOperatorType interface_operator = InterfaceOperatorType::automatic;
+    HistoryOnChange       history_on_change  = HistoryOnChange::restart;
 
     void
     declare_parameters(ParameterHandler &prm);
@@ -239,7 +252,7 @@ namespace coaxfit
   {
     bool                unilateral           = true;
     ActiveSetUpdateType active_set_update    = ActiveSetUpdateType::automatic;
-    double              active_set_tolerance = 1e-4;
+    double              active_set_tolerance = 1e-1;
 
     void
     declare_parameters(ParameterHandler &prm);

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <ostream>
+#include <set>
 #include <vector>
 
 namespace coaxfit
@@ -78,9 +79,28 @@ namespace coaxfit
     void
     dirichlet_step();
 
+    /**
+     * After the first Dirichlet step (prescribed @p u_shaft, @p u_hub,
+     * reactions @p f1, @p f2): measure the bodies' compliances, replace an
+     * adaptive rule's initial alpha by the Winkler alpha, and rescale the
+     * step's answers (u1, u2, @p f1, @p f2) to that alpha.
+     */
+    void
+    seed_alpha(const Vector<double> &u_shaft,
+               const Vector<double> &u_hub,
+               Vector<double>       &f1,
+               Vector<double>       &f2);
+
     /** Throw a SolverError if the residuals grow or are not finite. */
     void
     check_divergence() const;
+
+    /**
+     * Whether the mismatch of the Neumann (@p neumann) or Dirichlet steps
+     * grew in each of the last @p window steps of that kind.
+     */
+    bool
+    grew(bool neumann, unsigned int window) const;
 
     /** Why the residuals look divergent or stalled; empty if they do not. */
     std::string
@@ -108,9 +128,21 @@ namespace coaxfit
     Vector<double> next_force; ///< force for the next Neumann step
     Vector<double> neumann_force, neumann_u1, neumann_u2;
 
-    const double active_set_tolerance;
-    bool         active_set_verified = false;
-    unsigned int last_change_step    = 0;
+    /**
+     * The when-converged mode's tolerance for updating the flags; divided
+     * by 100 (down to Coupling/Tolerance) whenever an update returns to a
+     * set of flags seen before: updates from states that are too rough
+     * can cycle between zones.
+     */
+    double       active_set_tolerance;
+    const double initial_active_set_tolerance;
+    const double tolerance_floor;
+    /** Every set of flags the iteration has had. */
+    std::set<std::vector<bool>> visited_sets;
+    /** What the accelerator keeps when the contact points change. */
+    const HistoryOnChange history_on_change;
+    bool                  active_set_verified = false;
+    unsigned int          last_change_step    = 0;
   };
 } // namespace coaxfit
 

@@ -89,17 +89,29 @@ def result_directory(path):
 
 
 def restart_under_xvfb():
-    """Without a display pvpython cannot render: rerun under xvfb-run."""
+    """Without a display pvpython cannot render: run this script again under
+    xvfb-run and exit with its exit code. A virtual X server that is not
+    ready when the first window opens aborts pvpython (SIGABRT, "bad X
+    server connection", seen when several start at once): up to 3 tries,
+    each on a display of its own."""
     if os.environ.get("DISPLAY") or os.environ.get("COAXFIT_VIEW_XVFB"):
         return
     xvfb = shutil.which("xvfb-run")
     if xvfb is None:
         sys.exit("view.py: no display (DISPLAY unset) and no xvfb-run; install "
                  "Debian's xvfb or run with a display")
+    import subprocess
     os.environ["COAXFIT_VIEW_XVFB"] = "1"
     # sys.executable names VTK's interpreter, not pvpython: take pvpython.
     interpreter = shutil.which("pvpython") or sys.executable
-    os.execv(xvfb, [xvfb, "-a", interpreter] + sys.argv)
+    for attempt in range(3):
+        server = 100 + (os.getpid() * 3 + attempt * 97) % 800
+        code = subprocess.call([xvfb, "-a", "-n", str(server), interpreter] + sys.argv)
+        if code not in (134, -6):
+            break
+        print("view.py: the virtual display failed (exit %d), trying again" % code,
+              file=sys.stderr)
+    sys.exit(code)
 
 
 try:

@@ -431,13 +431,15 @@ namespace coaxfit
                       "the Dirichlet step u = u1 + (1 - alpha) (u2 - d - "
                       "u1), with index 1 the shaft and 2 the hub. A stiff "
                       "solid shaft wants alpha near 1, a thin tube near 0. "
-                      "The fixed rule uses it throughout. The adaptive "
-                      "rules (winkler, pointwise, and so aitken and "
-                      "iqn-ils) replace it in the first Dirichlet step by "
-                      "the Winkler alpha k2/(k1 + k2) of the compliances "
-                      "measured in that step (the step is rescaled, no "
-                      "extra solve), so for them it is only the probe's "
-                      "start. Allowed: 0 < alpha < 1.",
+                      "The fixed rule uses it throughout, from the "
+                      "paper's zero force. The adaptive rules (winkler, "
+                      "pointwise, and so aitken and iqn-ils) do not use "
+                      "it: their first Neumann step applies a uniform "
+                      "pressure (scaled afterwards to the one that closes "
+                      "the gap best) whose compliances give the Winkler "
+                      "alpha k2/(k1 + k2) (with clearance everywhere the "
+                      "first Dirichlet step measures them; the step is "
+                      "rescaled, no extra solve). Allowed: 0 < alpha < 1.",
                       Patterns::Double(0., 1.));
     add_selection(prm,
                   "Alpha controller",

@@ -44,6 +44,8 @@ namespace coaxfit
     force = next_force;
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
+    if (history_rows.empty() && start_loaded)
+      scale_first_load();
     update_active_set();
     last_displacement_mismatch
       = interface.relative_gap_residual(u1, u2, active_set.in_contact());
@@ -132,7 +134,7 @@ namespace coaxfit
     // traction free in both bodies.
     concurrently([&]() { shaft.solve(contact, u_shaft, zero, u1, f1); },
                  [&]() { hub.solve(contact, u_hub, zero, u2, f2); });
-    if (history_rows.size() == 1 && rule->adaptive())
+    if (history_rows.size() == 1 && rule->adaptive() && !start_loaded)
       seed_alpha(u_shaft, u_hub, f1, f2);
 
     for (unsigned int i = 0; i < n; ++i)
@@ -164,6 +166,31 @@ namespace coaxfit
        interface.relative_gap_residual(u1, u2, active_set.in_contact()),
        last_traction_mismatch,
        active_set.n_separated()});
+  }
+
+
+
+  void
+  StaggeredCoupling::scale_first_load()
+  {
+    // The first Neumann step applied a uniform unit pressure. The bodies
+    // are linear: the uniform pressure s that closes the gap best (least
+    // squares with the weights w, s = sum w d_i du / sum w du^2, du =
+    // u2 - u1) is the same step scaled by s. With nothing to close
+    // (clearance everywhere) the start is the paper's zero force.
+    double num = 0., den = 0.;
+    for (unsigned int i = 0; i < force.size(); ++i)
+      {
+        const double du = u2[i] - u1[i];
+        num += interface.weights()[i] * interface.interference(i) * du;
+        den += interface.weights()[i] * du * du;
+      }
+    const double s
+      = (den > 0. && num > 0. && std::isfinite(num / den)) ? num / den : 0.;
+    force *= s;
+    u1 *= s;
+    u2 *= s;
+    start_loaded = s > 0.;
   }
 
 
@@ -408,8 +435,15 @@ namespace coaxfit
   StaggeredCoupling::run(std::ostream *progress)
   {
     const unsigned int n = interface.n_points();
-    force.reinit(n); // the paper's zero approximation
+    force.reinit(n);
     next_force.reinit(n);
+    // The adaptive rules start from a loaded first Neumann step (a uniform
+    // pressure, scaled after the step), whose compliances give the
+    // Winkler alpha of the first Dirichlet step; the fixed rule from the
+    // paper's zero approximation.
+    start_loaded = rule->adaptive();
+    if (start_loaded)
+      next_force = interface.weights();
     u1.reinit(n);
     u2.reinit(n);
     history_rows.clear();

@@ -91,6 +91,13 @@ namespace coaxfit
                Vector<double>       &f1,
                Vector<double>       &f2);
 
+    /**
+     * After the first Neumann step under a uniform unit pressure: scale it
+     * (force, u1, u2) to the uniform pressure that closes the gap best.
+     */
+    void
+    scale_first_load();
+
     /** Throw a SolverError if the residuals grow or are not finite. */
     void
     check_divergence() const;
@@ -134,6 +141,8 @@ namespace coaxfit
      * set of flags seen before: updates from states that are too rough
      * can cycle between zones.
      */
+    /** Whether the first Neumann step is loaded (scale_first_load()). */
+    bool         start_loaded = false;
     double       active_set_tolerance;
     const double initial_active_set_tolerance;
     const double tolerance_floor;

@@ -276,7 +276,8 @@ Render(part_view)
 SetActiveView(part_view)
 
 if options["png"]:
-    png_dir = options["png_dir"] or directory.rstrip("/") + "_views"
+    # Beside the directory given (for a Case = all run not inside it).
+    png_dir = options["png_dir"] or os.path.abspath(options["dir"]).rstrip("/") + "_views"
     os.makedirs(png_dir, exist_ok=True)
     for name, view in (("section.png", section_view), ("part_3d.png", part_view)):
         path = os.path.join(png_dir, name)

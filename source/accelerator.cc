@@ -103,23 +103,16 @@ namespace coaxfit
 
 
 
-  void
-  IQNILSAcceleration::fit(const Vector<double>        &r,
-                          std::vector<Vector<double>> &v_kept,
-                          std::vector<Vector<double>> &w,
-                          std::vector<double>         &c) const
+  IQNILSAcceleration::Model
+  IQNILSAcceleration::factor() const
   {
-    v_kept.clear();
-    w.clear();
-    c.clear();
+    Model model;
     if (residuals.size() < 2)
-      return;
+      return model;
     const unsigned int m = residuals.size() - 1;
     // Columns newest first; modified Gram-Schmidt with the QR filter: a
     // column whose part orthogonal to the newer ones is below filter times
     // its norm carries no new information and is dropped.
-    std::vector<Vector<double>>      q;
-    std::vector<std::vector<double>> R; // R[j][k], upper triangular
     for (unsigned int k = m; k-- > 0;)
       {
         Vector<double> v(residuals[k + 1]);
@@ -127,7 +120,7 @@ namespace coaxfit
         const Vector<double> original(v);
         const double         norm_v = v.l2_norm();
         std::vector<double>  coefficients;
-        for (const auto &qj : q)
+        for (const auto &qj : model.q)
           {
             const double a = qj * v;
             v.add(-a, qj);
@@ -137,23 +130,61 @@ namespace coaxfit
         if (!(norm > filter * norm_v) || norm_v == 0.)
           continue;
         v /= norm;
-        q.push_back(v);
+        model.q.push_back(v);
         coefficients.push_back(norm);
-        R.push_back(coefficients);
-        v_kept.push_back(original);
-        w.push_back(outputs[k + 1]);
-        w.back() -= outputs[k];
+        model.R.push_back(coefficients);
+        model.v.push_back(original);
+        model.w.push_back(outputs[k + 1]);
+        model.w.back() -= outputs[k];
       }
-    // R c = -Q^T r by back substitution (R[j] holds column j).
-    const unsigned int n_cols = q.size();
-    c.assign(n_cols, 0.);
+    // With a prior, its product with V is needed for every step.
+    if (!prior.empty())
+      for (const Vector<double> &v : model.v)
+        {
+          model.prior_v.emplace_back(v.size());
+          multiply_prior(v, model.prior_v.back());
+        }
+    return model;
+  }
+
+
+
+  void
+  IQNILSAcceleration::multiply_prior(const Vector<double> &x,
+                                     Vector<double>       &out) const
+  {
+    const unsigned int n = x.size();
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int k = 0; k < n; ++k)
+        out[i] += prior[i * n + k] * x[k];
+  }
+
+
+
+  void
+  IQNILSAcceleration::add_model_step(const Model          &model,
+                                     const Vector<double> &r,
+                                     Vector<double>       &out) const
+  {
+    // c = argmin |V c + r|: R c = -Q^T r by back substitution (R[j] holds
+    // column j).
+    const unsigned int  n_cols = model.q.size();
+    std::vector<double> c(n_cols);
     for (unsigned int j = n_cols; j-- > 0;)
       {
-        double s = -(q[j] * r);
+        double s = -(model.q[j] * r);
         for (unsigned int k = j + 1; k < n_cols; ++k)
-          s -= R[k][j] * c[k];
-        c[j] = s / R[j][j];
+          s -= model.R[k][j] * c[k];
+        c[j] = s / model.R[j][j];
       }
+    // J r = W c (+ J_prior r + (J_prior V) c with a prior).
+    for (unsigned int j = 0; j < n_cols; ++j)
+      out.add(c[j], model.w[j]);
+    if (prior.empty())
+      return;
+    multiply_prior(r, out);
+    for (unsigned int j = 0; j < n_cols; ++j)
+      out.add(c[j], model.prior_v[j]);
   }
 
 
@@ -170,30 +201,7 @@ namespace coaxfit
         outputs.erase(outputs.begin());
       }
     // x_{k+1} = G(x_k) + J r_k with the model J of the history.
-    add_model_step(Vector<double>(residuals.back()), g);
-  }
-
-
-
-  void
-  IQNILSAcceleration::add_model_step(const Vector<double> &r,
-                                     Vector<double>       &out) const
-  {
-    // J r = W c (+ J_prior (r + V c) with a prior), c = argmin |V c + r|.
-    std::vector<Vector<double>> v, w;
-    std::vector<double>         c;
-    fit(r, v, w, c);
-    for (unsigned int j = 0; j < c.size(); ++j)
-      out.add(c[j], w[j]);
-    if (prior.empty())
-      return;
-    Vector<double> rest(r);
-    for (unsigned int j = 0; j < c.size(); ++j)
-      rest.add(c[j], v[j]);
-    const unsigned int n = r.size();
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int k = 0; k < n; ++k)
-        out[i] += prior[i * n + k] * rest[k];
+    add_model_step(factor(), residuals.back(), g);
   }
 
 
@@ -202,24 +210,25 @@ namespace coaxfit
   IQNILSAcceleration::keep_model(const std::vector<bool> &changed)
   {
     // J = J_prior - (W + J_prior V)(V^T V)^-1 V^T, applied to the unit
-    // vectors: column k of J is J e_k, and (V^T V)^-1 V^T e_k = -c(e_k)
-    // with the fit's c for r = e_k.
+    // vectors: column k of J is J e_k (one factorization of the history
+    // serves all n columns).
     const unsigned int n = changed.size();
     if (residuals.size() < 2 || residuals.back().size() != n)
       {
         restart();
         return;
       }
+    const Model         history = factor();
     std::vector<double> model(n * n, 0.);
-    Vector<double>      unit(n);
+    Vector<double>      unit(n), column(n);
     for (unsigned int k = 0; k < n; ++k)
       {
         if (changed[k])
           continue;
         unit    = 0.;
         unit[k] = 1.;
-        Vector<double> column(n);
-        add_model_step(unit, column);
+        column  = 0.;
+        add_model_step(history, unit, column);
         for (unsigned int i = 0; i < n; ++i)
           if (!changed[i])
             model[i * n + k] = column[i];

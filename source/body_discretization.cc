@@ -481,14 +481,11 @@ namespace coaxfit
 
     DataOutBase::VtkFlags flags;
     flags.print_date_and_time = false;
-    for (const std::string name : {"displacement_mm",
-                                   "elastic_displacement_mm",
-                                   "volumetric_stress_MPa",
-                                   "sigma_rr_MPa",
-                                   "sigma_zz_MPa",
-                                   "sigma_tt_MPa",
-                                   "sigma_rz_MPa",
-                                   "von_Mises_MPa"})
+    // The unit is the last part of every name written (body_id has none).
+    std::vector<std::string> written = stresses.get_names();
+    written.insert(written.end(), names.begin(), names.end());
+    written.push_back(assembled.get_names()[0]);
+    for (const std::string &name : written)
       flags.physical_units[name] = name.substr(name.rfind('_') + 1);
     data_out.set_flags(flags);
     data_out.write_vtu(out);

@@ -10,6 +10,31 @@
 
 namespace coaxfit
 {
+  namespace
+  {
+    /**
+     * The energy-weighted Winkler compliance k = sum |u F| / sum F^2/w of a
+     * body that answered the nodal forces @p force with @p u (w: the lumped
+     * weights); 0 if there is no load or the sums are not finite.
+     */
+    double
+    winkler_compliance(const Vector<double> &u,
+                       const Vector<double> &force,
+                       const Vector<double> &weights)
+    {
+      double work = 0., load = 0.;
+      for (unsigned int i = 0; i < force.size(); ++i)
+        {
+          work += std::abs(u[i] * force[i]);
+          load += force[i] * force[i] / weights[i];
+        }
+      const double k = work / load;
+      return (load > 0. && std::isfinite(k)) ? k : 0.;
+    }
+  } // namespace
+
+
+
   StaggeredCoupling::StaggeredCoupling(BodySolver                &shaft_solver,
                                        BodySolver                &hub_solver,
                                        InterfaceOperator         &shaft,
@@ -212,19 +237,10 @@ namespace coaxfit
     // softer than the other gets a first force off by the ratio of the
     // stiffnesses (1e3 for E ratios of 1e4) and the iteration fails.
     const double alpha0 = rule->representative_alpha();
-    double       work1 = 0., work2 = 0., load1 = 0., load2 = 0.;
-    for (unsigned int i = 0; i < f1.size(); ++i)
-      {
-        work1 += std::abs(u_shaft[i] * f1[i]);
-        work2 += std::abs(u_hub[i] * f2[i]);
-        load1 += f1[i] * f1[i] / interface.weights()[i];
-        load2 += f2[i] * f2[i] / interface.weights()[i];
-      }
-    if (!(load1 > 0.) || !(load2 > 0.) || !(work1 > 0.) || !(work2 > 0.)
-        || !std::isfinite(work1 + work2 + load1 + load2))
+    const double k1     = winkler_compliance(u_shaft, f1, interface.weights());
+    const double k2     = winkler_compliance(u_hub, f2, interface.weights());
+    if (!(k1 > 0.) || !(k2 > 0.))
       return; // no contact point, or nothing prescribed: keep alpha
-    const double k1    = work1 / load1;
-    const double k2    = work2 / load2;
     const double alpha = std::clamp(k2 / (k1 + k2), 1e-9, 1. - 1e-9);
     const double c1    = (1. - alpha) / (1. - alpha0);
     const double c2    = alpha / alpha0;
@@ -244,22 +260,16 @@ namespace coaxfit
     // step with a non-zero load; for a Winkler pair the process contracts
     // for |alpha rho - (1 - alpha)/rho| < 1, rho = sqrt(k1/k2), and is
     // exact for alpha = k2 / (k1 + k2), formula (4.20).
-    double work1 = 0., work2 = 0., load = 0.;
-    for (unsigned int i = 0; i < neumann_force.size(); ++i)
-      {
-        work1 -= neumann_u1[i] * neumann_force[i];
-        work2 += neumann_u2[i] * neumann_force[i];
-        load += neumann_force[i] * neumann_force[i] / interface.weights()[i];
-      }
+    const double k1
+      = winkler_compliance(neumann_u1, neumann_force, interface.weights());
+    const double k2
+      = winkler_compliance(neumann_u2, neumann_force, interface.weights());
     std::ostringstream msg;
-    if (!(load > 0.) || !(work1 > 0.) || !(work2 > 0.)
-        || !std::isfinite(work1 + work2))
+    if (!(k1 > 0.) || !(k2 > 0.))
       {
         msg << "try a value of Coupling/Alpha closer to the paper's table";
         return msg.str();
       }
-    const double k1  = work1 / load;
-    const double k2  = work2 / load;
     const double rho = std::sqrt(k1 / k2);
     const double lo  = std::max(0., (1. / rho - 1.) / (rho + 1. / rho));
     const double hi  = std::min(1., (1. / rho + 1.) / (rho + 1. / rho));
@@ -271,16 +281,27 @@ namespace coaxfit
 
 
 
-  bool
-  StaggeredCoupling::grew(const bool neumann, const unsigned int window) const
+  std::vector<double>
+  StaggeredCoupling::latest_mismatches(const bool         neumann,
+                                       const unsigned int count) const
   {
     std::vector<double> same_kind;
     for (auto it = history_rows.rbegin();
-         it != history_rows.rend() && same_kind.size() <= window;
+         it != history_rows.rend() && same_kind.size() < count;
          ++it)
       if (it->neumann == neumann)
         same_kind.push_back(neumann ? it->displacement_mismatch :
                                       it->traction_mismatch);
+    return same_kind;
+  }
+
+
+
+  bool
+  StaggeredCoupling::grew(const bool neumann, const unsigned int window) const
+  {
+    const std::vector<double> same_kind
+      = latest_mismatches(neumann, window + 1);
     return same_kind.size() > window
            && std::is_sorted(same_kind.rbegin(),
                              same_kind.rend(),
@@ -308,25 +329,17 @@ namespace coaxfit
       {
         // The same kind of residual grew in each of the last four steps of
         // that kind.
-        const unsigned int  window = 4;
-        std::vector<double> same_kind;
-        for (auto it = history_rows.rbegin();
-             it != history_rows.rend() && same_kind.size() <= window;
-             ++it)
-          if (it->neumann == neumann)
-            same_kind.push_back(residual(*it));
         // An accelerator's sequence is judged by both residuals: after a
         // restart (a change of the contact zone) its first steps may trade
         // one mismatch for the other while the other still falls.
-        if (same_kind.size() > window
-            && std::is_sorted(same_kind.rbegin(),
-                              same_kind.rend(),
-                              [](double a, double b) { return a <= b; })
-            && (!accelerated || grew(!neumann, window)))
+        const unsigned int window = 4;
+        if (grew(neumann, window) && (!accelerated || grew(!neumann, window)))
           {
             s << "the " << (neumann ? "displacement" : "traction")
               << " mismatch grew in each of the last " << window
-              << " steps, from " << same_kind.back() << " to " << current;
+              << " steps, from "
+              << latest_mismatches(neumann, window + 1).back() << " to "
+              << current;
             return s.str();
           }
       }

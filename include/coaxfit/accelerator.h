@@ -19,7 +19,8 @@ namespace coaxfit
    * applied in a Neumann step and G(x) the blend F1 + alpha (F2 - F1) of the
    * reactions of the Dirichlet step that follows; the accelerator sees only
    * the pairs (x_k, G(x_k)) and returns the next x. The coupling calls
-   * restart() when the set of contact points changes: the map is then a
+   * restart(), forget_points() or keep_model() when the set of contact
+   * points changes (Coupling/Active set change): the map is then a
    * different one.
    */
   class Accelerator
@@ -153,19 +154,32 @@ namespace coaxfit
 
   private:
     /**
-     * The filtered least-squares model of the history for the residual
-     * @p r: the kept difference columns V and W and the coefficients c of
-     * min |V c + r|. Empty if the history has no usable column.
+     * The filtered least-squares model of the history: the kept difference
+     * columns V (as Q R) and W, and with a prior J_prior V. Empty if the
+     * history has no usable column.
      */
-    void
-    fit(const Vector<double>        &r,
-        std::vector<Vector<double>> &v,
-        std::vector<Vector<double>> &w,
-        std::vector<double>         &c) const;
+    struct Model
+    {
+      std::vector<Vector<double>>      q;       ///< orthonormal Q of V
+      std::vector<std::vector<double>> R;       ///< R[j][k], column j
+      std::vector<Vector<double>>      v;       ///< the kept columns of V
+      std::vector<Vector<double>>      w;       ///< the matching ones of W
+      std::vector<Vector<double>>      prior_v; ///< J_prior v_j
+    };
 
-    /** Add J @p r, the model's step for the residual @p r, to @p out. */
+    /** Factor the current history (modified Gram-Schmidt, QR filter). */
+    Model
+    factor() const;
+
+    /** Add J @p r, the step of @p model for the residual @p r, to @p out. */
     void
-    add_model_step(const Vector<double> &r, Vector<double> &out) const;
+    add_model_step(const Model          &model,
+                   const Vector<double> &r,
+                   Vector<double>       &out) const;
+
+    /** Add J_prior @p x to @p out. */
+    void
+    multiply_prior(const Vector<double> &x, Vector<double> &out) const;
 
     const unsigned int          max_columns;
     const double                filter;

@@ -103,6 +103,13 @@ namespace coaxfit
     check_divergence() const;
 
     /**
+     * The mismatches of the latest @p count Neumann (@p neumann) or
+     * Dirichlet steps, newest first (fewer if there are fewer).
+     */
+    std::vector<double>
+    latest_mismatches(bool neumann, unsigned int count) const;
+
+    /**
      * Whether the mismatch of the Neumann (@p neumann) or Dirichlet steps
      * grew in each of the last @p window steps of that kind.
      */
@@ -135,14 +142,14 @@ namespace coaxfit
     Vector<double> next_force; ///< force for the next Neumann step
     Vector<double> neumann_force, neumann_u1, neumann_u2;
 
+    /** Whether the first Neumann step is loaded (scale_first_load()). */
+    bool start_loaded = false;
     /**
      * The when-converged mode's tolerance for updating the flags; divided
      * by 100 (down to Coupling/Tolerance) whenever an update returns to a
      * set of flags seen before: updates from states that are too rough
      * can cycle between zones.
      */
-    /** Whether the first Neumann step is loaded (scale_first_load()). */
-    bool         start_loaded = false;
     double       active_set_tolerance;
     const double initial_active_set_tolerance;
     const double tolerance_floor;

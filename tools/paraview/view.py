@@ -281,5 +281,14 @@ if options["png"]:
     os.makedirs(png_dir, exist_ok=True)
     for name, view in (("section.png", section_view), ("part_3d.png", part_view)):
         path = os.path.join(png_dir, name)
-        SaveScreenshot(path, view, ImageResolution=size)
+        # Written beside and renamed: a killed or failed view leaves the
+        # earlier picture, never half of one.
+        partial = os.path.join(png_dir, ".%s.partial-%d.png" % (name[:-4], os.getpid()))
+        try:
+            if not SaveScreenshot(partial, view, ImageResolution=size):
+                sys.exit("view.py: ParaView could not save %s" % path)
+            os.replace(partial, path)
+        finally:
+            if os.path.exists(partial):
+                os.remove(partial)
         print("  wrote %s" % path)

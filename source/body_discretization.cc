@@ -481,6 +481,7 @@ namespace coaxfit
 
     DataOutBase::VtkFlags flags;
     flags.print_date_and_time = false;
+    flags.compression_level   = DataOutBase::VtkFlags::best_speed;
     // The unit is the last part of every name written (body_id has none).
     std::vector<std::string> written = stresses.get_names();
     written.insert(written.end(), names.begin(), names.end());

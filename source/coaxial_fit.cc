@@ -451,8 +451,19 @@ namespace coaxfit
     std::vector<std::string>      lines;
     {
       TimerOutput::Scope scope(timer, "output");
-      for (const auto &writer : make_result_writers(parameters.output))
-        lines.push_back(writer->write(results, directory));
+      // The files are independent (each writer its own), except the
+      // report, which shows the plots that exist: it comes last.
+      const auto writers = make_result_writers(parameters.output);
+      lines.resize(writers.size());
+      std::vector<std::function<void()>> jobs;
+      for (unsigned int i = 0; i < writers.size(); ++i)
+        if (!writers[i]->needs_the_other_files())
+          jobs.emplace_back(
+            [&, i]() { lines[i] = writers[i]->write(results, directory); });
+      each_on_own_thread(jobs);
+      for (unsigned int i = 0; i < writers.size(); ++i)
+        if (writers[i]->needs_the_other_files())
+          lines[i] = writers[i]->write(results, directory);
     }
     for (const std::string phase : {"setup",
                                     "loads",

@@ -4,6 +4,10 @@
 #include <deal.II/base/thread_management.h>
 
 #include <exception>
+#include <functional>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 namespace coaxfit
 {
@@ -40,6 +44,48 @@ namespace coaxfit
     task.join();
     if (error)
       std::rethrow_exception(error);
+  }
+
+
+  /**
+   * Run every job of @p jobs on a thread of its own and wait for all of
+   * them (result writers: a job may wait for a child process, so it gets
+   * a thread, not a task of the pool). The first exception thrown, in the
+   * order of the jobs, is re-thrown here after every job has finished;
+   * none is lost or left running.
+   */
+  inline void
+  each_on_own_thread(const std::vector<std::function<void()>> &jobs)
+  {
+    std::vector<std::exception_ptr> errors(jobs.size());
+    std::vector<std::thread>        threads;
+    threads.reserve(jobs.size());
+    for (unsigned int i = 0; i < jobs.size(); ++i)
+      {
+        auto run = [&jobs, &errors, i]() {
+          try
+            {
+              jobs[i]();
+            }
+          catch (...)
+            {
+              errors[i] = std::current_exception();
+            }
+        };
+        try
+          {
+            threads.emplace_back(run);
+          }
+        catch (const std::system_error &) // no thread to be had: run here
+          {
+            run();
+          }
+      }
+    for (std::thread &thread : threads)
+      thread.join();
+    for (const std::exception_ptr &error : errors)
+      if (error)
+        std::rethrow_exception(error);
   }
 } // namespace coaxfit
 

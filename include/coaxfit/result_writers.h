@@ -56,6 +56,16 @@ namespace coaxfit
     /** The names of the files write() creates. */
     virtual std::vector<std::string>
     file_names() const = 0;
+
+    /**
+     * Whether write() reads what the other writers of the run wrote (it
+     * then runs after them; the others run concurrently).
+     */
+    virtual bool
+    needs_the_other_files() const
+    {
+      return false;
+    }
   };
 
   /** contact_pressure.csv: z, pressure, u_r of both bodies, gap, status. */
@@ -206,6 +216,13 @@ namespace coaxfit
 
     std::vector<std::string>
     file_names() const override;
+
+    /** It shows the plots that were drawn. */
+    bool
+    needs_the_other_files() const override
+    {
+      return true;
+    }
   };
 
   /** The writers of the files that @p output asks for, summary.json aside. */

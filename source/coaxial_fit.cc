@@ -136,7 +136,8 @@ namespace coaxfit
       }
     setup_loads();
     if (parameters.solver.method == SolverMethod::monolithic)
-      set_blas_threads(MultithreadInfo::n_cores());
+      set_blas_threads(MultithreadInfo::n_threads());
+    is_set_up = true;
   }
 
 
@@ -546,9 +547,38 @@ namespace coaxfit
 
 
   bool
+  CoaxialFit::reusable_across(const std::string &entry)
+  {
+    for (const std::string section :
+         {"Fit/", "Operation/", "Coupling/", "Contact/", "Design/", "Output/"})
+      if (entry.compare(0, section.size(), section) == 0)
+        return true;
+    return false;
+  }
+
+
+
+  void
+  CoaxialFit::reuse_for(const Parameters &other)
+  {
+    Assert(is_set_up, ExcMessage("reuse_for() needs a set-up case"));
+    parameters = other;
+    // The timings of this case are its own (the setup was shared).
+    timer.reset();
+    shaft->set_load(body_load(parameters, true));
+    hub->set_load(body_load(parameters, false));
+    coupling.reset();
+    design.reset();
+    setup_loads();
+  }
+
+
+
+  bool
   CoaxialFit::run_in(const std::string &directory)
   {
-    setup_system();
+    if (!is_set_up)
+      setup_system();
     pcout << "coaxfit: case " << parameters.case_name << '\n'
           << "  shaft: " << shaft->n_cells() << " cells, " << shaft->n_dofs()
           << " DoFs;  hub: " << hub->n_cells() << " cells, " << hub->n_dofs()

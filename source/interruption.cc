@@ -1,11 +1,14 @@
 #include <coaxfit/interruption.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <set>
 #include <stdexcept>
+#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -15,9 +18,10 @@ namespace coaxfit
   {
     namespace
     {
-      std::string staging_directory;
-      std::string target_directory;
-      bool        committed = false;
+      std::string   staging_directory;
+      std::string   target_directory;
+      bool          committed = false;
+      std::set<int> children;
 
       /** Written by the signal handler, read by the watcher thread. */
       int signal_pipe[2] = {-1, -1};
@@ -58,6 +62,15 @@ namespace coaxfit
         message += (signal == SIGINT  ? "SIGINT" :
                     signal == SIGTERM ? "SIGTERM" :
                                         "SIGHUP");
+        // Running cases end first, each removing its own staging.
+        for (const int child : children)
+          ::kill(child, signal);
+        for (const int child : children)
+          {
+            int status = 0;
+            while (::waitpid(child, &status, 0) < 0 && errno == EINTR)
+              ;
+          }
         if (committed)
           message += "; the results are complete in " + target_directory;
         else if (!staging_directory.empty())
@@ -96,6 +109,36 @@ namespace coaxfit
     set_committed()
     {
       committed = true;
+    }
+
+
+
+    void
+    restart_after_fork()
+    {
+      ::close(signal_pipe[0]);
+      ::close(signal_pipe[1]);
+      staging_directory.clear();
+      target_directory.clear();
+      committed = false;
+      children.clear();
+      install();
+    }
+
+
+
+    void
+    add_child(const int pid)
+    {
+      children.insert(pid);
+    }
+
+
+
+    void
+    remove_child(const int pid)
+    {
+      children.erase(pid);
     }
 
 

@@ -1,12 +1,16 @@
-#include <coaxfit/coaxial_fit.h>
-#include <coaxfit/fit_case_study.h>
+#include <coaxfit/case_batch.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/interruption.h>
+#include <coaxfit/parameter_sweep.h>
 #include <coaxfit/parameters.h>
+#include <coaxfit/run_guard.h>
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <new>
 #include <string>
 #include <utility>
@@ -16,6 +20,8 @@ namespace
 {
   const char *usage
     = "Usage: coaxfit [--quiet] [--set Section/Name=value]... FILE.prm\n"
+      "       coaxfit [options] FILE.prm FILE2.prm ...    several cases\n"
+      "       coaxfit [options] --sweep Section/Name=VALUES FILE.prm\n"
       "       coaxfit --print-parameters\n"
       "       coaxfit --help\n"
       "\n"
@@ -27,6 +33,17 @@ namespace
       "                             --set Mesh/Global\\ refinements=2\n"
       "                             --set Material/Hub/E=7e4\n"
       "  --quiet                    print only the final report and errors\n"
+      "                             (of several cases: only the table)\n"
+      "  --sweep Section/Name=v1,v2,...   or   Section/Name=from:to:count\n"
+      "                             run FILE.prm once for each value; the\n"
+      "                             study goes to its Output/Directory with\n"
+      "                             _sweep appended: sweep.csv, sweep.png\n"
+      "                             and one subdirectory per value\n"
+      "  --jobs N                   cases run at once (default: the number\n"
+      "                             of processors), each in its own process\n"
+      "  --table FILE.csv           the table of several files (default:\n"
+      "                             cases.csv beside the first case's\n"
+      "                             output directory)\n"
       "  --print-parameters         list every parameter with its default,\n"
       "                             allowed values and documentation\n"
       "  --help                     this text\n"
@@ -37,6 +54,11 @@ namespace
       "interface.vtp and solution.pvd, replacing that directory as a whole\n"
       "once every file is complete (a failed or interrupted run leaves the\n"
       "earlier results untouched).\n"
+      "\n"
+      "Several files or a sweep: each case runs as it would alone, into its\n"
+      "own directory; a failed case does not stop the others; a table of\n"
+      "all of them is printed (and written as CSV) at the end, and the exit\n"
+      "code is the gravest of the cases' (3, then 2, then 1).\n"
       "\n"
       "Exit codes: 0 converged; 1 bad input or a run refused for its\n"
       "resources; 2 the coupling did not converge (the state is written,\n"
@@ -66,9 +88,85 @@ namespace
     } action
       = Action::run;
     std::vector<std::pair<std::string, std::string>> overrides;
-    std::string                                      filename;
+    std::vector<std::string>                         filenames;
     bool                                             quiet = false;
+    std::string                                      sweep;
+    std::string                                      table;
+    unsigned int                                     jobs = 0; ///< 0: cores
   };
+
+  /** The argument of option @p option at argv[i + 1]. */
+  std::string
+  option_argument(int &i, const int argc, char **argv, const char *what)
+  {
+    if (i + 1 >= argc)
+      throw coaxfit::InputError(std::string(argv[i]) + " needs an argument "
+                                + what);
+    return argv[++i];
+  }
+
+  /**
+   * Several parameter files: one case each, run by a CaseBatch; the table
+   * printed and written; the batch's exit code.
+   */
+  int
+  run_files(const CommandLine &line, const unsigned int jobs)
+  {
+    using namespace coaxfit;
+    std::vector<BatchCase>             cases(line.filenames.size());
+    std::map<std::string, std::string> directory_of; // target -> file
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      {
+        BatchCase &c = cases[i];
+        c.label      = line.filenames[i];
+        try
+          {
+            auto p = std::make_shared<Parameters>(
+              read_parameters(line.filenames[i], line.overrides));
+            const std::string target
+              = std::filesystem::weakly_canonical(
+                  std::filesystem::absolute(p->output_directory()))
+                  .string();
+            const auto [at, is_new]
+              = directory_of.emplace(target, line.filenames[i]);
+            if (!is_new)
+              throw InputError("parameter Output/Directory = "
+                               + p->output_directory() + " is also that of "
+                               + at->second
+                               + " (each case needs its own directory)");
+            c.parameters = p;
+          }
+        catch (const InputError &e)
+          {
+            c.input_error = e.what();
+          }
+      }
+    std::string table = line.table;
+    if (table.empty())
+      for (const BatchCase &c : cases)
+        if (c.parameters)
+          {
+            const std::filesystem::path first(c.parameters->output_directory());
+            table
+              = (first.has_parent_path() ? first.parent_path() / "cases.csv" :
+                                           std::filesystem::path("cases.csv"))
+                  .string();
+            break;
+          }
+
+    const std::vector<CaseOutcome> outcomes
+      = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
+    std::cout << "\ncoaxfit: " << cases.size() << " cases\n";
+    CaseBatch::print_table(std::cout, cases, outcomes);
+    if (!table.empty())
+      {
+        write_file_atomically(table, CaseBatch::table_csv(cases, outcomes));
+        std::cout << "  table in " << table << std::endl;
+      }
+    return CaseBatch::exit_code(outcomes);
+  }
+
+
 
   /** Parse the arguments; throws InputError on a malformed command line. */
   CommandLine
@@ -97,16 +195,39 @@ namespace
             line.overrides.emplace_back(setting.substr(0, eq),
                                         setting.substr(eq + 1));
           }
+        else if (arg == "--sweep")
+          {
+            if (!line.sweep.empty())
+              throw InputError("--sweep given twice (one parameter is swept "
+                               "at a time)");
+            line.sweep
+              = option_argument(i, argc, argv, "Section/Name=v1,v2,...");
+          }
+        else if (arg == "--table")
+          line.table = option_argument(i, argc, argv, "FILE.csv");
+        else if (arg == "--jobs" || arg == "-j")
+          {
+            const std::string n = option_argument(i, argc, argv, "N");
+            if (n.empty() || n.size() > 4
+                || n.find_first_not_of("0123456789") != std::string::npos
+                || std::stoi(n) < 1 || std::stoi(n) > 1024)
+              throw InputError("--jobs " + n
+                               + ": expected a whole number from 1 to 1024");
+            line.jobs = std::stoi(n);
+          }
         else if (arg.size() > 1 && arg[0] == '-')
           throw InputError("unknown option '" + arg + "' (see coaxfit --help)");
-        else if (line.filename.empty())
-          line.filename = arg;
         else
-          throw InputError("more than one parameter file given ('"
-                           + line.filename + "' and '" + arg + "')");
+          line.filenames.push_back(arg);
       }
-    if (line.action == CommandLine::Action::run && line.filename.empty())
+    if (line.action == CommandLine::Action::run && line.filenames.empty())
       throw InputError("no parameter file given (see coaxfit --help)");
+    if (!line.sweep.empty() && line.filenames.size() > 1)
+      throw InputError("--sweep runs one parameter file ("
+                       + std::to_string(line.filenames.size()) + " given)");
+    if (!line.table.empty() && line.filenames.size() < 2)
+      throw InputError("--table is the table of several parameter files "
+                       "(a sweep writes sweep.csv into its directory)");
     return line;
   }
 } // namespace
@@ -123,8 +244,8 @@ int
 coaxfit_main(int argc, char **argv)
 {
   using namespace coaxfit;
-  try
-    {
+  return exit_code_of(
+    [&]() {
       Interruption::install();
       const CommandLine line = parse_command_line(argc, argv);
       if (line.action == CommandLine::Action::help)
@@ -144,55 +265,36 @@ coaxfit_main(int argc, char **argv)
           return 0;
         }
 
+      const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
+      if (!line.sweep.empty())
+        {
+          const int code = ParameterSweep(line.filenames[0],
+                                          line.overrides,
+                                          SweepSpec::parse(line.sweep),
+                                          jobs,
+                                          !line.quiet,
+                                          std::cout,
+                                          std::cerr)
+                             .run();
+          check_standard_output();
+          return code;
+        }
+      if (line.filenames.size() > 1)
+        {
+          const int code = run_files(line, jobs);
+          check_standard_output();
+          return code;
+        }
+
       const Parameters parameters
-        = read_parameters(line.filename, line.overrides);
-      bool converged = false;
-      if (parameters.fit.fit_case == FitCase::all)
-        converged = FitCaseStudy(parameters, std::cout, !line.quiet).run();
-      else
-        converged = CoaxialFit(parameters, std::cout, !line.quiet).run();
+        = read_parameters(line.filenames[0], line.overrides);
+      const CaseFigures figures = run_case(parameters, std::cout, !line.quiet);
       check_standard_output();
-      if (!converged)
-        std::cerr << "coaxfit: error: the coupling did not converge within "
-                     "Coupling/Max steps = "
-                  << parameters.coupling.max_steps
-                  << " (the state is written, marked \"converged\": false)"
-                  << std::endl;
-      return converged ? 0 : 2;
-    }
-  catch (const InputError &e)
-    {
-      std::cerr << "coaxfit: error: " << e.what() << std::endl;
-      return 1;
-    }
-  catch (const SolverError &e)
-    {
-      std::cerr << "coaxfit: error: " << e.what() << std::endl;
-      return 2;
-    }
-  catch (const ResourceError &e)
-    {
-      std::cerr << "coaxfit: error: " << e.what() << std::endl;
-      return 3;
-    }
-  catch (const std::bad_alloc &)
-    {
-      std::cerr << "coaxfit: error: out of memory (try fewer "
-                   "Mesh/Global refinements)"
-                << std::endl;
-      return 3;
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "coaxfit: internal error: " << one_line_message(e)
-                << std::endl;
-      return 3;
-    }
-  catch (...)
-    {
-      std::cerr << "coaxfit: internal error: unknown exception" << std::endl;
-      return 3;
-    }
+      if (!figures.converged)
+        std::cerr << not_converged_message(parameters) << std::endl;
+      return figures.converged ? 0 : 2;
+    },
+    std::cerr);
 }
 
 

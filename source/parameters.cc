@@ -93,6 +93,14 @@ namespace coaxfit
       return n;
     }
 
+    const Names<SweepFiles> &
+    names(SweepFiles)
+    {
+      static const Names<SweepFiles> n{{"figures", SweepFiles::figures},
+                                       {"complete", SweepFiles::complete}};
+      return n;
+    }
+
     const Names<VolumetricIntegration> &
     names(VolumetricIntegration)
     {
@@ -720,6 +728,18 @@ namespace coaxfit
                       "Print the wall times of the phases at the end of "
                       "the run (they are always in summary.json). Tests "
                       "switch this off to keep their output reproducible.");
+    add_selection(prm,
+                  "Sweep files",
+                  sweep_files,
+                  "What each value of a --sweep writes into its "
+                  "subdirectory. figures: summary.json, "
+                  "contact_pressure.csv, convergence.csv, the surface "
+                  "stresses and parameters.prm (run that file for the "
+                  "value's VTU, plots and report). complete: everything "
+                  "that Write vtu, Write plots and Write report ask for, "
+                  "as a single run (about 5x the time of a sweep of "
+                  "figures at the default mesh). Single runs and several "
+                  "files ignore this entry.");
     prm.leave_subsection();
   }
 
@@ -900,6 +920,34 @@ namespace coaxfit
     ParameterHandler prm;
     declare_parameters(prm);
     set_entry(prm, path, value);
+  }
+
+
+
+  bool
+  is_declared_entry(const std::string &path)
+  {
+    ParameterHandler prm;
+    Parameters().declare_parameters(prm);
+    const std::vector<std::string> parts = split_path(path);
+    if (parts.size() < 2)
+      return false;
+    try
+      {
+        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+          prm.enter_subsection(parts[i]);
+        // An empty value: refused by the entry's pattern if it exists.
+        prm.set(parts.back(), "");
+        return true;
+      }
+    catch (const ParameterHandler::ExcEntryUndeclared &)
+      {
+        return false;
+      }
+    catch (const std::exception &)
+      {
+        return true;
+      }
   }
 
 

@@ -90,40 +90,39 @@ namespace coaxfit
       return gp.str();
     }
 
-    /**
-     * Run gnuplot on @p script in @p directory; the empty string on success,
-     * otherwise why not.
-     */
-    std::string
-    run_gnuplot(const std::string &directory, const std::string &script)
-    {
-      posix_spawn_file_actions_t actions;
-      posix_spawn_file_actions_init(&actions);
-      posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
-      posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-      posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-      const char *argv[] = {"gnuplot", script.c_str(), nullptr};
-      pid_t       pid    = 0;
-      const int   error  = posix_spawnp(&pid,
-                                     "gnuplot",
-                                     &actions,
-                                     nullptr,
-                                     const_cast<char *const *>(argv),
-                                     environ);
-      posix_spawn_file_actions_destroy(&actions);
-      if (error != 0)
-        return error == ENOENT ?
-                 "gnuplot not found (Debian package gnuplot-nox)" :
-                 std::string("cannot start gnuplot: ") + std::strerror(error);
-      int status = 0;
-      while (::waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR)
-          return std::string("waiting for gnuplot: ") + std::strerror(errno);
-      if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return "gnuplot failed";
-      return "";
-    }
   } // namespace
+
+
+
+  std::string
+  run_gnuplot(const std::string &directory, const std::string &script)
+  {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    const char *argv[] = {"gnuplot", script.c_str(), nullptr};
+    pid_t       pid    = 0;
+    const int   error  = posix_spawnp(&pid,
+                                   "gnuplot",
+                                   &actions,
+                                   nullptr,
+                                   const_cast<char *const *>(argv),
+                                   environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0)
+      return error == ENOENT ?
+               "gnuplot not found (Debian package gnuplot-nox)" :
+               std::string("cannot start gnuplot: ") + std::strerror(error);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0)
+      if (errno != EINTR)
+        return std::string("waiting for gnuplot: ") + std::strerror(errno);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      return "gnuplot failed";
+    return "";
+  }
 
 
 

@@ -17,6 +17,7 @@ namespace coaxfit
    */
   bool
   set_blas_threads(int n_threads);
+
 } // namespace coaxfit
 
 #endif

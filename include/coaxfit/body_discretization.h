@@ -102,6 +102,16 @@ namespace coaxfit
     }
 
     /**
+     * Replace the loads of operation (the matrix does not depend on them;
+     * load vectors are assembled from load() when asked for).
+     */
+    void
+    set_load(const BodyLoad &load)
+    {
+      body_load = load;
+    }
+
+    /**
      * Write @p solution as VTU to @p out (the caller owns the file and
      * checks that it was written). Every name carries its unit, which is
      * also attached to the array as its `units` attribute:
@@ -248,7 +258,7 @@ namespace coaxfit
     const BodyGeometry body_geometry;
     const Material     body_material;
     const bool         reduced_volumetric_integration;
-    const BodyLoad     body_load;
+    BodyLoad           body_load;
 
     Triangulation<2>          triangulation;
     const FESystem<2>         fe;

@@ -81,6 +81,25 @@ namespace coaxfit
     void
     setup_system();
 
+    /**
+     * Whether a case that differs from this one only in the entry
+     * @p entry (Section/Name) can reuse its meshes, matrices and
+     * factorizations: entries of Fit, Operation, Coupling, Contact, Design
+     * and Output change the interference, the loads or the settings of the
+     * coupling, never a body's matrix.
+     */
+    static bool
+    reusable_across(const std::string &entry);
+
+    /**
+     * Make this case, set up, the case of @p other, which differs from it
+     * only in entries for which reusable_across() holds: its parameters,
+     * interference and loads of operation are taken, the meshes, matrices
+     * and factorizations kept. run_in() then runs it without a new setup.
+     */
+    void
+    reuse_for(const Parameters &other);
+
     /** The coupling iteration; one line per step to @p progress if given. */
     bool
     solve(std::ostream *progress);
@@ -180,7 +199,8 @@ namespace coaxfit
                  const Complementarity          &complementarity,
                  const std::vector<std::string> &warnings) const;
 
-    const Parameters                    parameters;
+    Parameters                          parameters;
+    bool                                is_set_up = false;
     std::ostream                       &out;
     ConditionalOStream                  pcout;
     std::unique_ptr<BodyDiscretization> shaft, hub;

@@ -35,7 +35,6 @@ namespace coaxfit
     static std::vector<std::string>
     file_names();
 
-  private:
     /** One line of the table. */
     struct Row
     {
@@ -49,6 +48,14 @@ namespace coaxfit
     static std::vector<std::string>
     column_names();
 
+    /** The table of the cases (after run()). */
+    const std::vector<Row> &
+    get_rows() const
+    {
+      return rows;
+    }
+
+  private:
     /** Write fit_cases.csv into @p directory and print the table. */
     void
     output_results(const std::string &directory) const;

@@ -45,6 +45,26 @@ namespace coaxfit
     /** Note that the results are in place (for the message). */
     void
     set_committed();
+
+    /**
+     * In a child process made by fork(): a watcher and a pipe of its own
+     * (threads do not survive fork, and the parent's pipe is the
+     * parent's), no staging directory and no children yet.
+     */
+    void
+    restart_after_fork();
+
+    /**
+     * Note a child process running a case (call with mutex() held): on a
+     * signal the watcher passes the signal on to it and waits for it to
+     * end before it cleans up and ends this process.
+     */
+    void
+    add_child(int pid);
+
+    /** The child has ended (call with mutex() held). */
+    void
+    remove_child(int pid);
   } // namespace Interruption
 } // namespace coaxfit
 

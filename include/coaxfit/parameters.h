@@ -262,6 +262,13 @@ namespace coaxfit
   };
 
   /** Subsection `Output`. */
+  /** What each value of a `--sweep` writes (`Output/Sweep files`). */
+  enum class SweepFiles
+  {
+    figures, ///< summary.json, the CSV files and parameters
+    complete ///< also VTU, plots and report, as Write vtu/plots/report say
+  };
+
   struct OutputParameters
   {
     /** As given; Parameters::output_directory() resolves an empty one. */
@@ -270,6 +277,7 @@ namespace coaxfit
     bool        write_plots  = true;
     bool        write_report = true;
     bool        print_timing = true;
+    SweepFiles  sweep_files  = SweepFiles::figures;
 
     void
     declare_parameters(ParameterHandler &prm);
@@ -395,6 +403,10 @@ namespace coaxfit
   replace_prm_line(const std::string &text,
                    const std::string &entry,
                    const std::string &value);
+
+  /** Whether `Section/Name` @p path is an entry of coaxfit's parameters. */
+  bool
+  is_declared_entry(const std::string &path);
 
   /** Print every parameter with its default, pattern and documentation. */
   void

@@ -225,6 +225,13 @@ namespace coaxfit
     }
   };
 
+  /**
+   * Run gnuplot on @p script in @p directory (its output discarded); the
+   * empty string on success, otherwise why not.
+   */
+  std::string
+  run_gnuplot(const std::string &directory, const std::string &script);
+
   /** The writers of the files that @p output asks for, summary.json aside. */
   std::vector<std::unique_ptr<ResultWriter>>
   make_result_writers(const OutputParameters &output);

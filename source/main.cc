@@ -4,6 +4,7 @@
 #include <coaxfit/parameter_sweep.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/run_guard.h>
+#include <coaxfit/usage.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -18,53 +19,6 @@
 
 namespace
 {
-  const char *usage
-    = "Usage: coaxfit [--quiet] [--set Section/Name=value]... FILE.prm\n"
-      "       coaxfit [options] FILE.prm FILE2.prm ...    several cases\n"
-      "       coaxfit [options] --sweep Section/Name=VALUES FILE.prm\n"
-      "       coaxfit --print-parameters\n"
-      "       coaxfit --help\n"
-      "\n"
-      "Computes the contact of an interference fit between a shaft (or tube)\n"
-      "and a hub, two coaxial elastic cylinders, by the principle of\n"
-      "alternating continuity (staggered Dirichlet-Neumann coupling).\n"
-      "\n"
-      "  --set Section/Name=value   override a parameter of FILE.prm, e.g.\n"
-      "                             --set Mesh/Global\\ refinements=2\n"
-      "                             --set Material/Hub/E=7e4\n"
-      "  --quiet                    print only the final report and errors\n"
-      "                             (of several cases: only the table)\n"
-      "  --sweep Section/Name=v1,v2,...   or   Section/Name=from:to:count\n"
-      "                             run FILE.prm once for each value; the\n"
-      "                             study goes to its Output/Directory with\n"
-      "                             _sweep appended: sweep.csv, sweep.png\n"
-      "                             and one subdirectory per value\n"
-      "  --jobs N                   cases run at once (default: the number\n"
-      "                             of processors), each in its own process\n"
-      "  --table FILE.csv           the table of several files (default:\n"
-      "                             cases.csv beside the first case's\n"
-      "                             output directory)\n"
-      "  --print-parameters         list every parameter with its default,\n"
-      "                             allowed values and documentation\n"
-      "  --help                     this text\n"
-      "\n"
-      "Results go to Output/Directory (default output/<FILE's base name>):\n"
-      "contact_pressure.csv, convergence.csv, summary.json, parameters.prm\n"
-      "(repeats the run), parameters.json, shaft.vtu, hub.vtu,\n"
-      "interface.vtp and solution.pvd, replacing that directory as a whole\n"
-      "once every file is complete (a failed or interrupted run leaves the\n"
-      "earlier results untouched).\n"
-      "\n"
-      "Several files or a sweep: each case runs as it would alone, into its\n"
-      "own directory; a failed case does not stop the others; a table of\n"
-      "all of them is printed (and written as CSV) at the end, and the exit\n"
-      "code is the gravest of the cases' (3, then 2, then 1).\n"
-      "\n"
-      "Exit codes: 0 converged; 1 bad input or a run refused for its\n"
-      "resources; 2 the coupling did not converge (the state is written,\n"
-      "marked \"converged\": false) or diverged (nothing written); 3 internal\n"
-      "or system error (out of memory, disk full); 130, 143 interrupted by\n"
-      "SIGINT, SIGTERM (earlier results untouched).\n";
 
   /** Standard output must have taken everything written to it. */
   void
@@ -234,73 +188,79 @@ namespace
 
 
 
-/**
- * The program; main() ends the process with its exit code without running
- * the libraries' exit handlers (everything is written and flushed by then):
- * OpenBLAS's never returns when its threads could not get their buffers
- * under an address space limit.
- */
-int
-coaxfit_main(int argc, char **argv)
+namespace
 {
-  using namespace coaxfit;
-  return exit_code_of(
-    [&]() {
-      Interruption::install();
-      const CommandLine line = parse_command_line(argc, argv);
-      if (line.action == CommandLine::Action::help)
-        std::cout << usage;
-      else if (line.action == CommandLine::Action::print_parameters)
-        try
+  /** The program: its exit code. */
+  int
+  coaxfit_main(int argc, char **argv)
+  {
+    using namespace coaxfit;
+    return exit_code_of(
+      [&]() {
+        Interruption::install();
+        const CommandLine line = parse_command_line(argc, argv);
+        if (line.action == CommandLine::Action::help)
+          std::cout << coaxfit::usage;
+        else if (line.action == CommandLine::Action::print_parameters)
+          try
+            {
+              print_parameters(std::cout);
+            }
+          catch (const std::exception &) // deal.II's ExcIO
+            {
+              std::cout.setstate(std::ios::badbit);
+            }
+        if (line.action != CommandLine::Action::run)
           {
-            print_parameters(std::cout);
+            check_standard_output();
+            return 0;
           }
-        catch (const std::exception &) // deal.II's ExcIO
+
+        const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
+        if (!line.sweep.empty())
           {
-            std::cout.setstate(std::ios::badbit);
+            const int code = ParameterSweep(line.filenames[0],
+                                            line.overrides,
+                                            SweepSpec::parse(line.sweep),
+                                            jobs,
+                                            !line.quiet,
+                                            std::cout,
+                                            std::cerr)
+                               .run();
+            check_standard_output();
+            return code;
           }
-      if (line.action != CommandLine::Action::run)
-        {
-          check_standard_output();
-          return 0;
-        }
+        if (line.filenames.size() > 1)
+          {
+            const int code = run_files(line, jobs);
+            check_standard_output();
+            return code;
+          }
 
-      const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
-      if (!line.sweep.empty())
-        {
-          const int code = ParameterSweep(line.filenames[0],
-                                          line.overrides,
-                                          SweepSpec::parse(line.sweep),
-                                          jobs,
-                                          !line.quiet,
-                                          std::cout,
-                                          std::cerr)
-                             .run();
-          check_standard_output();
-          return code;
-        }
-      if (line.filenames.size() > 1)
-        {
-          const int code = run_files(line, jobs);
-          check_standard_output();
-          return code;
-        }
-
-      const Parameters parameters
-        = read_parameters(line.filenames[0], line.overrides);
-      const CaseFigures figures = run_case(parameters, std::cout, !line.quiet);
-      check_standard_output();
-      if (!figures.converged)
-        std::cerr << not_converged_message(parameters) << std::endl;
-      return figures.converged ? 0 : 2;
-    },
-    std::cerr);
-}
+        const Parameters parameters
+          = read_parameters(line.filenames[0], line.overrides);
+        const CaseFigures figures
+          = run_case(parameters, std::cout, !line.quiet);
+        check_standard_output();
+        if (!figures.converged)
+          std::cerr << not_converged_message(parameters) << std::endl;
+        return figures.converged ? 0 : 2;
+      },
+      std::cerr);
+  }
+} // namespace
 
 
 
-int
-main(int argc, char **argv)
+/**
+ * The program's entry, called by the launcher (source/launcher/main.cc)
+ * once it has loaded this module. It ends the process with its exit code
+ * (std::_Exit after flushing the streams, without the libraries' exit
+ * handlers: OpenBLAS's never returns when its threads could not get their
+ * buffers under an address space limit).
+ */
+extern "C" [[noreturn]] __attribute__((visibility("default"))) void
+coaxfit_app_main(int argc, char **argv)
 {
   const int code = coaxfit_main(argc, argv);
   std::cout.flush();

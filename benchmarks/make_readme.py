@@ -110,6 +110,21 @@ settings, each against the monolithic solver (all rows:
 
 ![work precision](work_precision.png)
 
+## Whole-process speed (`speed_benchmark.py`)
+
+What a user waits for: whole processes (start-up, solve, output), median
+of 5 runs after a warm-up. Before (commit c664458) and after (this table's
+build); `COAXFIT_EXE=... SPEED_TABLE=speed_before python3
+benchmarks/speed_benchmark.py` times another build.
+
+""" + text("speed_summary.md") + """
+
+Before:
+
+""" + text("speed_before_summary.md") + """
+
+""" + text("speed_notes.md") + """
+
 ## Stress suite, long part (`stress/run_stress.py`)
 
 Thin walls, nearly incompressible material (FE degree 1-3, full and

@@ -75,6 +75,19 @@ variants = [os.path.join(ROOT, "prm", "variant_%02d.prm" % m)
             for m in range(1, 19)]
 default = os.path.join(ROOT, "prm", "default.prm")
 
+# The floor of any process that links deal.II: an empty main() linked to
+# Debian's libdeal.ii.so (its ~200 libraries are loaded and relocated
+# before main()).
+empty = os.path.join(WORK, "empty")
+with open(empty + ".cc", "w") as f:
+    f.write("int main() { return 0; }\n")
+built = subprocess.run(["g++", "-O2", empty + ".cc", "-o", empty,
+                        "-Wl,--no-as-needed", "-ldeal.ii"],
+                       capture_output=True).returncode == 0
+if built:
+    w, p, _ = median_of([empty])
+    add("an empty program linked to libdeal.ii.so (start-up floor)", w, p)
+
 # Start-up: --help, and --print-parameters (loads the libraries, builds
 # every parameter).
 w, p, _ = median_of([EXE, "--help"])

@@ -6,6 +6,7 @@
 #include <coaxfit/input_error.h>
 #include <coaxfit/interruption.h>
 #include <coaxfit/resources.h>
+#include <coaxfit/result_directory.h>
 #include <coaxfit/run_guard.h>
 
 #include <cerrno>
@@ -15,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -401,9 +403,17 @@ namespace coaxfit
         else
           {
             // Killed (e.g. by the kernel's out-of-memory killer): the case
-            // could not clean up; its staging directory is removed by the
-            // next run into the same target.
-            outcome.exit_code = 3;
+            // could not clean up; its staging directory is removed here (a
+            // case of a study writes into the study's, removed below).
+            outcome.exit_code  = 3;
+            const BatchCase &c = cases[r.index];
+            if (c.directory.empty())
+              {
+                std::error_code ignored;
+                std::filesystem::remove_all(
+                  staging_directory_of(c.parameters->output_directory(), pid),
+                  ignored);
+              }
             printed_err[r.index]
               += "coaxfit: error: the case's process was killed by signal "
                  + std::to_string(WTERMSIG(status)) + " ("
@@ -505,11 +515,11 @@ namespace coaxfit
           }
         csv << ',' << std::setprecision(4) << o.wall << std::setprecision(15)
             << ','
-            << csv_field(cases[i].parameters ?
-                           (cases[i].directory.empty() ?
-                              cases[i].parameters->output_directory() :
-                              cases[i].parameters->output.directory) :
-                           "")
+            << csv_field(!cases[i].parameters || o.figures.values.empty() ?
+                           "" :
+                         cases[i].directory.empty() ?
+                           cases[i].parameters->output_directory() :
+                           cases[i].parameters->output.directory)
             << ',' << csv_field(o.exit_code == 0 ? "" : o.error) << '\n';
       }
     return csv.str();

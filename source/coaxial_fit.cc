@@ -499,13 +499,14 @@ namespace coaxfit
 
 
   std::vector<double>
-  CoaxialFit::coarser_corner_values() const
+  CoaxialFit::coarser_corner_values()
   {
-    Parameters coarse = parameters;
-    --coarse.mesh.global_refinements;
-    coarse.design.corner_trend = false;
-    CoaxialFit fit(coarse, out, false);
-    fit.setup_system();
+    const Parameters coarse = coarser_parameters();
+    if (coarse_twin)
+      coarse_twin->reuse_for(coarse);
+    else
+      prepare_corner_trend();
+    CoaxialFit &fit = *coarse_twin;
     try
       {
         fit.solve(nullptr);
@@ -542,6 +543,30 @@ namespace coaxfit
     directory.commit();
     pcout << "  results in " << parameters.output_directory() << '\n';
     return converged;
+  }
+
+
+
+  Parameters
+  CoaxialFit::coarser_parameters() const
+  {
+    Parameters coarse = parameters;
+    --coarse.mesh.global_refinements;
+    coarse.design.corner_trend = false;
+    return coarse;
+  }
+
+
+
+  void
+  CoaxialFit::prepare_corner_trend()
+  {
+    if (coarse_twin || !parameters.design.corner_trend
+        || parameters.mesh.global_refinements == 0)
+      return;
+    coarse_twin
+      = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
+    coarse_twin->setup_system();
   }
 
 

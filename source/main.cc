@@ -3,17 +3,22 @@
 #include <coaxfit/interruption.h>
 #include <coaxfit/parameter_sweep.h>
 #include <coaxfit/parameters.h>
+#include <coaxfit/result_directory.h>
 #include <coaxfit/run_guard.h>
 #include <coaxfit/usage.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
+#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -44,7 +49,7 @@ namespace
     std::vector<std::pair<std::string, std::string>> overrides;
     std::vector<std::string>                         filenames;
     bool                                             quiet = false;
-    std::string                                      sweep;
+    std::optional<std::string>                       sweep;
     std::string                                      table;
     unsigned int                                     jobs = 0; ///< 0: cores
   };
@@ -60,6 +65,77 @@ namespace
   }
 
   /**
+   * Standard input, output and error open: a closed one is opened on
+   * /dev/null (input) or /dev/full (output: writing fails and is reported
+   * by the exit code), so that no file or pipe of the program takes its
+   * number and receives what was meant for the console.
+   */
+  void
+  ensure_standard_descriptors()
+  {
+    for (int fd = 0; fd < 3; ++fd)
+      if (::fcntl(fd, F_GETFD) < 0 && errno == EBADF)
+        ::open(fd == 0 ? "/dev/null" : "/dev/full",
+               fd == 0 ? O_RDONLY : O_WRONLY);
+  }
+
+  /** @p path made absolute, normalized, symbolic links resolved. */
+  std::filesystem::path
+  resolved(const std::string &path)
+  {
+    std::error_code error;
+    return std::filesystem::weakly_canonical(
+      std::filesystem::absolute(coaxfit::normalized_directory(path)), error);
+  }
+
+  /** Whether @p inner is @p outer or lies inside it. */
+  bool
+  is_within(const std::filesystem::path &inner,
+            const std::filesystem::path &outer)
+  {
+    auto i = inner.begin();
+    for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
+      if (i == inner.end() || *i != *o)
+        return false;
+    return true;
+  }
+
+  /**
+   * Check the table's file before any case runs: not an input file, not
+   * in a case's output directory (each is replaced as a whole), not a
+   * directory or device, and in a directory that can be written.
+   */
+  void
+  check_table(const std::string                                      &table,
+              const std::vector<std::string>                         &inputs,
+              const std::vector<std::pair<std::string, std::string>> &targets)
+  {
+    using coaxfit::InputError;
+    namespace fs           = std::filesystem;
+    const fs::path    path = resolved(table);
+    const std::string said = "--table " + table + ": ";
+    std::error_code   error;
+    const auto        status = fs::status(path, error);
+    if (fs::exists(status) && !fs::is_regular_file(status))
+      throw InputError(said + "exists and is not a regular file");
+    for (const std::string &input : inputs)
+      if (fs::equivalent(path, input, error))
+        throw InputError(said + "is the parameter file " + input);
+    for (const auto &[target, file] : targets)
+      if (is_within(path, target))
+        throw InputError(said + "lies in " + target
+                         + ", the output directory of " + file
+                         + ", which its results replace as a whole");
+    fs::path existing = path.parent_path();
+    while (!existing.empty() && !fs::exists(existing, error))
+      existing = existing.parent_path();
+    if (existing.empty() || !fs::is_directory(existing, error)
+        || ::access(existing.c_str(), W_OK | X_OK) != 0)
+      throw InputError(said + "cannot be written (" + existing.string()
+                       + " is not a writable directory)");
+  }
+
+  /**
    * Several parameter files: one case each, run by a CaseBatch; the table
    * printed and written; the batch's exit code.
    */
@@ -67,8 +143,8 @@ namespace
   run_files(const CommandLine &line, const unsigned int jobs)
   {
     using namespace coaxfit;
-    std::vector<BatchCase>             cases(line.filenames.size());
-    std::map<std::string, std::string> directory_of; // target -> file
+    std::vector<BatchCase> cases(line.filenames.size());
+    std::vector<std::pair<std::string, std::string>> targets; // dir, file
     for (unsigned int i = 0; i < cases.size(); ++i)
       {
         BatchCase &c = cases[i];
@@ -77,17 +153,18 @@ namespace
           {
             auto p = std::make_shared<Parameters>(
               read_parameters(line.filenames[i], line.overrides));
-            const std::string target
-              = std::filesystem::weakly_canonical(
-                  std::filesystem::absolute(p->output_directory()))
-                  .string();
-            const auto [at, is_new]
-              = directory_of.emplace(target, line.filenames[i]);
-            if (!is_new)
-              throw InputError("parameter Output/Directory = "
-                               + p->output_directory() + " is also that of "
-                               + at->second
-                               + " (each case needs its own directory)");
+            const std::filesystem::path target
+              = resolved(p->output_directory());
+            for (const auto &[other, file] : targets)
+              if (is_within(target, other) || is_within(other, target))
+                throw InputError(
+                  "parameter Output/Directory = " + p->output_directory()
+                  + (target == std::filesystem::path(other) ?
+                       " is also that of " :
+                     is_within(target, other) ? " lies in that of " :
+                                                " contains that of ")
+                  + file + " (each case needs a directory of its own)");
+            targets.emplace_back(target.string(), line.filenames[i]);
             c.parameters = p;
           }
         catch (const InputError &e)
@@ -100,13 +177,16 @@ namespace
       for (const BatchCase &c : cases)
         if (c.parameters)
           {
-            const std::filesystem::path first(c.parameters->output_directory());
+            const std::filesystem::path first(
+              normalized_directory(c.parameters->output_directory()));
             table
               = (first.has_parent_path() ? first.parent_path() / "cases.csv" :
                                            std::filesystem::path("cases.csv"))
                   .string();
             break;
           }
+    if (!table.empty())
+      check_table(table, line.filenames, targets);
 
     const std::vector<CaseOutcome> outcomes
       = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
@@ -114,6 +194,9 @@ namespace
     CaseBatch::print_table(std::cout, cases, outcomes);
     if (!table.empty())
       {
+        std::error_code error;
+        std::filesystem::create_directories(
+          std::filesystem::path(table).parent_path(), error);
         write_file_atomically(table, CaseBatch::table_csv(cases, outcomes));
         std::cout << "  table in " << table << std::endl;
       }
@@ -151,7 +234,7 @@ namespace
           }
         else if (arg == "--sweep")
           {
-            if (!line.sweep.empty())
+            if (line.sweep)
               throw InputError("--sweep given twice (one parameter is swept "
                                "at a time)");
             line.sweep
@@ -176,7 +259,7 @@ namespace
       }
     if (line.action == CommandLine::Action::run && line.filenames.empty())
       throw InputError("no parameter file given (see coaxfit --help)");
-    if (!line.sweep.empty() && line.filenames.size() > 1)
+    if (line.sweep && line.filenames.size() > 1)
       throw InputError("--sweep runs one parameter file ("
                        + std::to_string(line.filenames.size()) + " given)");
     if (!line.table.empty() && line.filenames.size() < 2)
@@ -197,6 +280,7 @@ namespace
     using namespace coaxfit;
     return exit_code_of(
       [&]() {
+        ensure_standard_descriptors();
         Interruption::install();
         const CommandLine line = parse_command_line(argc, argv);
         if (line.action == CommandLine::Action::help)
@@ -217,11 +301,11 @@ namespace
           }
 
         const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
-        if (!line.sweep.empty())
+        if (line.sweep)
           {
             const int code = ParameterSweep(line.filenames[0],
                                             line.overrides,
-                                            SweepSpec::parse(line.sweep),
+                                            SweepSpec::parse(*line.sweep),
                                             jobs,
                                             !line.quiet,
                                             std::cout,

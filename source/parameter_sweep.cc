@@ -41,6 +41,13 @@ namespace coaxfit
         }
     }
 
+    /** @p text for a message: at most 60 characters. */
+    std::string
+    shown(const std::string &text)
+    {
+      return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+    }
+
     std::string
     trim(const std::string &text)
     {
@@ -73,7 +80,7 @@ namespace coaxfit
   {
     const auto eq = argument.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw InputError("--sweep " + argument
+      throw InputError("--sweep " + shown(argument)
                        + ": expected Section/Name=v1,v2,... or "
                          "Section/Name=from:to:count");
     SweepSpec         spec;
@@ -82,22 +89,25 @@ namespace coaxfit
     const auto colon       = list.find(':');
     if (colon != std::string::npos && list.find(',') == std::string::npos)
       {
-        const auto second = list.find(':', colon + 1);
+        const auto        second = list.find(':', colon + 1);
+        const std::string n
+          = second == std::string::npos ? "" : trim(list.substr(second + 1));
         double     from = 0., to = 0., count = 0.;
         const bool ok
-          = second != std::string::npos
+          = second != std::string::npos && !n.empty() && n.size() <= 4
+            && n.find_first_not_of("0123456789") == std::string::npos
             && to_number(trim(list.substr(0, colon)), from)
             && to_number(trim(list.substr(colon + 1, second - colon - 1)), to)
-            && to_number(trim(list.substr(second + 1)), count);
-        if (!ok || count != std::floor(count) || count < 2 || count > 1000)
-          throw InputError("--sweep " + argument
+            && to_number(n, count);
+        if (!ok || count < 2 || count > 1000)
+          throw InputError("--sweep " + shown(argument)
                            + ": a range is from:to:count, with numbers from "
                              "and to and a whole count from 2 to 1000");
         for (unsigned int i = 0; i < count; ++i)
           {
             // The end points exactly as given, the others evenly between.
-            const double v
-              = i + 1 == count ? to : from + (to - from) * i / (count - 1.);
+            const double t = i / (count - 1.);
+            const double v = i + 1 == count ? to : from * (1. - t) + to * t;
             std::ostringstream s;
             s << std::setprecision(12) << v;
             spec.values.push_back(s.str());
@@ -112,10 +122,10 @@ namespace coaxfit
           spec.values.emplace_back();
         for (const std::string &value : spec.values)
           if (value.empty())
-            throw InputError("--sweep " + argument
+            throw InputError("--sweep " + shown(argument)
                              + ": an empty value in the list");
         if (spec.values.empty() || spec.values.size() > 1000)
-          throw InputError("--sweep " + argument
+          throw InputError("--sweep " + shown(argument)
                            + ": give from 1 to 1000 values");
       }
     return spec;
@@ -170,7 +180,8 @@ namespace coaxfit
     if (sweep.entry == "Output/Directory")
       throw InputError("--sweep: Output/Directory cannot be swept (each "
                        "value has its subdirectory of the study)");
-    const std::string study = base.output_directory() + "_sweep";
+    const std::string study
+      = normalized_directory(base.output_directory()) + "_sweep";
 
     // What the study directory may hold: a run's files (in the value
     // subdirectories), the table and plot, and the value subdirectories of
@@ -222,7 +233,12 @@ namespace coaxfit
           }
         catch (const InputError &e)
           {
-            c.input_error = e.what();
+            // Said of the value as the user gave it.
+            std::string       message = e.what();
+            const std::string set     = "--set " + sweep.entry + "=";
+            if (message.compare(0, set.size(), set) == 0)
+              message = "--sweep value " + message.substr(set.size());
+            c.input_error = message;
           }
       }
 
@@ -245,7 +261,10 @@ namespace coaxfit
                 // On a thread that ends before any fork: the OpenMP
                 // thread pool of CHOLMOD's factorization belongs to it and
                 // ends with it (a pool does not survive fork).
-                each_on_own_thread({[&]() { prepared->setup_system(); }});
+                each_on_own_thread({[&]() {
+                  prepared->setup_system();
+                  prepared->prepare_corner_trend();
+                }});
               }
             c.prepared = prepared.get();
           }
@@ -328,6 +347,7 @@ namespace coaxfit
         std::remove((directory + "/sweep.png").c_str());
         return "sweep.png skipped: " + problem;
       }
+    check_complete_png(directory + "/sweep.png");
     return "sweep.png: pressures and torque capacity against " + sweep.entry
            + " (sweep.gp redraws it)";
   }

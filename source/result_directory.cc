@@ -68,15 +68,52 @@ namespace coaxfit
 
 
 
-  ResultDirectory::ResultDirectory(const std::string           &target_name,
+  std::string
+  normalized_directory(const std::string &path)
+  {
+    if (path.empty())
+      return path;
+    std::string normal = fs::path(path).lexically_normal().string();
+    while (normal.size() > 1 && normal.back() == '/')
+      normal.pop_back();
+    const std::string last = fs::path(normal).filename().string();
+    if (last == "." || last == "..")
+      {
+        normal = fs::absolute(normal).lexically_normal().string();
+        while (normal.size() > 1 && normal.back() == '/')
+          normal.pop_back();
+      }
+    return normal;
+  }
+
+
+
+  std::string
+  staging_directory_of(const std::string &target, const int pid)
+  {
+    std::error_code error;
+    const fs::path  whole
+      = fs::weakly_canonical(fs::absolute(normalized_directory(target)), error);
+    return (whole.parent_path()
+            / ("." + whole.filename().string() + partial_marker
+               + std::to_string(pid)))
+      .string();
+  }
+
+
+
+  ResultDirectory::ResultDirectory(const std::string           &given_name,
                                    const std::set<std::string> &result_files)
   {
+    // As given in the messages; a trailing slash would name no directory.
+    const std::string &target_name = given_name;
+    const std::string  normal      = normalized_directory(given_name);
     if (target_name.empty())
       refuse(target_name, "empty");
     check_path_length(target_name);
     std::error_code error;
     // Work on the directory itself if the target is a symbolic link.
-    target = fs::weakly_canonical(fs::absolute(target_name), error).string();
+    target = fs::weakly_canonical(fs::absolute(normal), error).string();
     if (error)
       refuse(target_name, "cannot resolve the path (" + error.message() + ")");
     check_path_length(target);

@@ -1,8 +1,10 @@
+#include <coaxfit/input_error.h>
 #include <coaxfit/result_writers.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
@@ -102,15 +104,25 @@ namespace coaxfit
     posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
     posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    // This process ignores SIGXFSZ (a write error instead); gnuplot does
+    // not check its writes, so it gets the default: killed at the limit.
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t defaults;
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGXFSZ);
+    posix_spawnattr_setsigdefault(&attributes, &defaults);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
     const char *argv[] = {"gnuplot", script.c_str(), nullptr};
     pid_t       pid    = 0;
     const int   error  = posix_spawnp(&pid,
                                    "gnuplot",
                                    &actions,
-                                   nullptr,
+                                   &attributes,
                                    const_cast<char *const *>(argv),
                                    environ);
     posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attributes);
     if (error != 0)
       return error == ENOENT ?
                "gnuplot not found (Debian package gnuplot-nox)" :
@@ -119,9 +131,36 @@ namespace coaxfit
     while (::waitpid(pid, &status, 0) < 0)
       if (errno != EINTR)
         return std::string("waiting for gnuplot: ") + std::strerror(errno);
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXFSZ)
+      throw ResourceError("drawing the plots with gnuplot failed: file size "
+                          "limit reached (the earlier results are untouched)");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
       return "gnuplot failed";
     return "";
+  }
+
+
+
+  void
+  check_complete_png(const std::string &filename)
+  {
+    // A PNG ends with its IEND chunk: length 0, "IEND", CRC AE 42 60 82.
+    const unsigned char end[]
+      = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+    std::ifstream in(filename, std::ios::binary | std::ios::ate);
+    bool          complete = false;
+    if (in && in.tellg() >= static_cast<std::streamoff>(sizeof(end)))
+      {
+        unsigned char tail[sizeof(end)];
+        in.seekg(-static_cast<std::streamoff>(sizeof(end)), std::ios::end);
+        in.read(reinterpret_cast<char *>(tail), sizeof(tail));
+        complete = in && std::equal(tail, tail + sizeof(end), end);
+      }
+    if (!complete)
+      throw ResourceError("writing '"
+                          + filename.substr(filename.find_last_of('/') + 1)
+                          + "' failed: disk full, quota or file size limit "
+                            "reached (the earlier results are untouched)");
   }
 
 
@@ -143,6 +182,9 @@ namespace coaxfit
             std::remove((directory + "/" + name).c_str());
         return "plots skipped: " + problem;
       }
+    for (const std::string &name : file_names())
+      if (name != script)
+        check_complete_png(directory + "/" + name);
     return "contact_pressure.png, surface_stresses.png, convergence.png: "
            "plots (plots.gp redraws them)";
   }

@@ -100,6 +100,14 @@ namespace coaxfit
     void
     reuse_for(const Parameters &other);
 
+    /**
+     * Set up the case one refinement coarser that the corner trend of the
+     * report solves (if Design/Corner trend asks for it), so that cases
+     * made from this one by reuse_for() reuse its setup too.
+     */
+    void
+    prepare_corner_trend();
+
     /** The coupling iteration; one line per step to @p progress if given. */
     bool
     solve(std::ostream *progress);
@@ -187,7 +195,11 @@ namespace coaxfit
      * that solve diverged.
      */
     std::vector<double>
-    coarser_corner_values() const;
+    coarser_corner_values();
+
+    /** This case one refinement coarser, without its own corner trend. */
+    Parameters
+    coarser_parameters() const;
 
     /** Warnings about the final state with @p pressure, one line each. */
     std::vector<std::string>
@@ -199,8 +211,10 @@ namespace coaxfit
                  const Complementarity          &complementarity,
                  const std::vector<std::string> &warnings) const;
 
-    Parameters                          parameters;
-    bool                                is_set_up = false;
+    Parameters parameters;
+    bool       is_set_up = false;
+    /** The coarser case of the corner trend, kept for reuse_for(). */
+    std::unique_ptr<CoaxialFit>         coarse_twin;
     std::ostream                       &out;
     ConditionalOStream                  pcout;
     std::unique_ptr<BodyDiscretization> shaft, hub;

@@ -7,6 +7,18 @@
 namespace coaxfit
 {
   /**
+   * @p path without trailing slashes, `.` and `..` parts resolved (a path
+   * that ends in one is made absolute): `out/` and `out/./` are `out`, and
+   * a name can be appended to the directory's own name.
+   */
+  std::string
+  normalized_directory(const std::string &path);
+
+  /** The staging directory a run of process @p pid makes for @p target. */
+  std::string
+  staging_directory_of(const std::string &target, int pid);
+
+  /**
    * The output directory of one run, replaced as a whole or not at all.
    *
    * The constructor checks the target (Output/Directory) before any work:

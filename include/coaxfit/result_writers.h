@@ -232,6 +232,13 @@ namespace coaxfit
   std::string
   run_gnuplot(const std::string &directory, const std::string &script);
 
+  /**
+   * Throw ResourceError unless @p filename is a complete PNG (gnuplot does
+   * not report a failed write: a full disk leaves a truncated file).
+   */
+  void
+  check_complete_png(const std::string &filename);
+
   /** The writers of the files that @p output asks for, summary.json aside. */
   std::vector<std::unique_ptr<ResultWriter>>
   make_result_writers(const OutputParameters &output);

@@ -88,6 +88,14 @@ namespace
       std::filesystem::absolute(coaxfit::normalized_directory(path)), error);
   }
 
+  /** The output directory of a case of several files. */
+  struct Target
+  {
+    std::filesystem::path resolved; ///< see resolved()
+    std::string           given;    ///< as the parameters say
+    std::string           file;     ///< the case's parameter file
+  };
+
   /** Whether @p inner is @p outer or lies inside it. */
   bool
   is_within(const std::filesystem::path &inner,
@@ -106,9 +114,9 @@ namespace
    * directory or device, and in a directory that can be written.
    */
   void
-  check_table(const std::string                                      &table,
-              const std::vector<std::string>                         &inputs,
-              const std::vector<std::pair<std::string, std::string>> &targets)
+  check_table(const std::string              &table,
+              const std::vector<std::string> &inputs,
+              const std::vector<Target>      &targets)
   {
     using coaxfit::InputError;
     namespace fs           = std::filesystem;
@@ -121,10 +129,10 @@ namespace
     for (const std::string &input : inputs)
       if (fs::equivalent(path, input, error))
         throw InputError(said + "is the parameter file " + input);
-    for (const auto &[target, file] : targets)
-      if (is_within(path, target))
-        throw InputError(said + "lies in " + target
-                         + ", the output directory of " + file
+    for (const Target &target : targets)
+      if (is_within(path, target.resolved))
+        throw InputError(said + "lies in " + target.given
+                         + ", the output directory of " + target.file
                          + ", which its results replace as a whole");
     fs::path existing = path.parent_path();
     while (!existing.empty() && !fs::exists(existing, error))
@@ -144,7 +152,7 @@ namespace
   {
     using namespace coaxfit;
     std::vector<BatchCase> cases(line.filenames.size());
-    std::vector<std::pair<std::string, std::string>> targets; // dir, file
+    std::vector<Target>    targets;
     for (unsigned int i = 0; i < cases.size(); ++i)
       {
         BatchCase &c = cases[i];
@@ -155,16 +163,17 @@ namespace
               read_parameters(line.filenames[i], line.overrides));
             const std::filesystem::path target
               = resolved(p->output_directory());
-            for (const auto &[other, file] : targets)
-              if (is_within(target, other) || is_within(other, target))
+            for (const Target &other : targets)
+              if (is_within(target, other.resolved)
+                  || is_within(other.resolved, target))
                 throw InputError(
                   "parameter Output/Directory = " + p->output_directory()
-                  + (target == std::filesystem::path(other) ?
-                       " is also that of " :
-                     is_within(target, other) ? " lies in that of " :
-                                                " contains that of ")
-                  + file + " (each case needs a directory of its own)");
-            targets.emplace_back(target.string(), line.filenames[i]);
+                  + (target == other.resolved          ? " is also that of " :
+                     is_within(target, other.resolved) ? " lies in that of " :
+                                                         " contains that of ")
+                  + other.file + " (each case needs a directory of its own)");
+            targets.push_back(
+              {target, p->output_directory(), line.filenames[i]});
             c.parameters = p;
           }
         catch (const InputError &e)

@@ -236,4 +236,35 @@ main()
               << agreement(cold["pressure"]["mean"].get<double>(), 187.5)
               << '\n';
   }
+
+  // Guards, before any case runs: directories inside each other, a table
+  // that would land in a case's directory (replaced as a whole), overwrite
+  // an input file or replace a directory.
+  {
+    write("nested.prm", lame_file("0.5", directory("lame_a/inner")));
+    const coaxfit_test::RunResult nested
+      = run_command("timeout 120 " + std::string(coaxfit_executable)
+                    + " --quiet lame_a.prm nested.prm 2>&1 >/dev/null");
+    std::cout << "a case inside another's directory: exit code "
+              << nested.exit_code << '\n'
+              << "  " << nested.message << "  results/lame_a/inner written: "
+              << (fs::exists("results/lame_a/inner") ? "YES" : "no") << '\n';
+    for (const std::string table :
+         {"results/lame_a/summary.json", "lame_b.prm", "results"})
+      {
+        const coaxfit_test::RunResult r = run_command(
+          "timeout 120 " + std::string(coaxfit_executable) + " --quiet --table "
+          + table + " lame_a.prm lame_b.prm 2>&1 >/dev/null");
+        std::cout << "--table " << table << ": exit code " << r.exit_code
+                  << "\n  " << r.message;
+      }
+    std::ifstream input("lame_b.prm");
+    std::string   first;
+    std::getline(input, first);
+    std::cout << "  lame_b.prm untouched: "
+              << (first == "subsection Geometry" ? "yes" : "NO")
+              << "; results/lame_a/summary.json still a summary: "
+              << (summary("results/lame_a").contains("pressure") ? "yes" : "NO")
+              << '\n';
+  }
 }

@@ -14,5 +14,6 @@ $PY separation_study.py 2
 $PY controller_benchmark.py
 $PY alpha_sweep.py
 $PY work_precision.py 5
+$PY speed_benchmark.py 5
 $PY stress/run_stress.py
 $PY make_readme.py

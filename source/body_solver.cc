@@ -1,10 +1,37 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
 #include <coaxfit/body_solver.h>
 
 namespace coaxfit
 {
-  BodySolver::BodySolver(const BodyDiscretization &body)
+  BodySolver::BodySolver(const BodyDiscretization &body, const bool amg)
     : body(body)
+    , amg(amg)
   {}
+
+
+
+  SparseMatrix<double>
+  BodySolver::eliminated_matrix(const std::vector<bool> &prescribed) const
+  {
+    // K with the rows and columns of the prescribed points eliminated
+    // symmetrically; the diagonal entries stay.
+    const auto          &dofs = body.get_interface_dofs();
+    SparseMatrix<double> matrix(body.get_sparsity_pattern());
+    matrix.copy_from(body.get_stiffness_matrix());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (prescribed[i])
+        for (auto entry = matrix.begin(dofs[i]); entry != matrix.end(dofs[i]);
+             ++entry)
+          if (entry->column() != dofs[i])
+            {
+              matrix.set(entry->column(), dofs[i], 0.);
+              entry->value() = 0.;
+            }
+    return matrix;
+  }
 
 
 
@@ -12,25 +39,12 @@ namespace coaxfit
   BodySolver::factorization(const std::vector<bool> &prescribed)
   {
     return factorizations.get(prescribed, [&]() {
-      // K with the rows and columns of the prescribed points eliminated
-      // symmetrically; the diagonal entries stay.
-      const auto          &dofs = body.get_interface_dofs();
-      SparseMatrix<double> matrix(body.get_sparsity_pattern());
-      matrix.copy_from(body.get_stiffness_matrix());
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-        if (prescribed[i])
-          for (auto entry = matrix.begin(dofs[i]); entry != matrix.end(dofs[i]);
-               ++entry)
-            if (entry->column() != dofs[i])
-              {
-                matrix.set(entry->column(), dofs[i], 0.);
-                entry->value() = 0.;
-              }
+      const SparseMatrix<double> matrix = eliminated_matrix(prescribed);
       if (!analyzed)
         {
           // The interface points last: the compliance is then the inverse
           // of the trailing block of the factor (interface_compliance()).
-          cholesky.analyze(matrix, dofs);
+          cholesky.analyze(matrix, body.get_interface_dofs());
           analyzed = true;
         }
       return cholesky.factorize(matrix);
@@ -39,10 +53,59 @@ namespace coaxfit
 
 
 
+  const BodySolver::AmgSystem &
+  BodySolver::amg_system(const std::vector<bool> &prescribed)
+  {
+    return amg_systems.get(prescribed, [&]() {
+      auto system = std::make_unique<AmgSystem>();
+      system->matrix.reinit(eliminated_matrix(prescribed));
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = body.get_dof_handler().get_fe().degree > 1;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 0.02;
+      DoFTools::extract_constant_modes(body.get_dof_handler(),
+                                       ComponentMask(2, true),
+                                       data.constant_modes);
+      system->preconditioner.initialize(system->matrix, data);
+      return system;
+    });
+  }
+
+
+
+  void
+  BodySolver::solve_system(const std::vector<bool> &prescribed,
+                           Vector<double>          &rhs)
+  {
+    if (!amg)
+      {
+        cholesky.solve(factorization(prescribed), rhs);
+        return;
+      }
+    const AmgSystem &system = amg_system(prescribed);
+    const double     norm   = rhs.l2_norm();
+    if (norm == 0.)
+      return; // the answer to no load is no displacement
+    // Relative residual 1e-12: the coupling's mismatches (1e-8 by
+    // default) are then not limited by the body solves.
+    SolverControl            control(10000, 1e-12 * norm);
+    SolverCG<Vector<double>> cg(control);
+    Vector<double>           solution(rhs.size());
+    cg.solve(system.matrix, solution, rhs, system.preconditioner);
+    cg_iterations += control.last_step();
+    rhs.swap(solution);
+  }
+
+
+
   void
   BodySolver::factorize(const std::vector<bool> &prescribed)
   {
-    factorization(prescribed);
+    if (amg)
+      amg_system(prescribed);
+    else
+      factorization(prescribed);
   }
 
 
@@ -80,7 +143,7 @@ namespace coaxfit
             rhs[dofs[i]] = K.diag_element(dofs[i]) * displacement[i];
       }
 
-    cholesky.solve(factorization(prescribed), rhs);
+    solve_system(prescribed, rhs);
     ++solve_count;
     body.get_constraints().distribute(rhs);
     return rhs;
@@ -93,9 +156,7 @@ namespace coaxfit
   {
     AssertDimension(load.size(), body.n_dofs());
     Vector<double> field(load);
-    cholesky.solve(factorization(
-                     std::vector<bool>(body.n_interface_points(), false)),
-                   field);
+    solve_system(std::vector<bool>(body.n_interface_points(), false), field);
     ++solve_count;
     body.get_constraints().distribute(field);
     return field;
@@ -122,6 +183,9 @@ namespace coaxfit
   void
   BodySolver::interface_compliance(FullMatrix<double> &compliance)
   {
+    AssertThrow(!amg,
+                ExcMessage("the interface compliance needs the direct "
+                           "solver (Solver/Linear solver = direct)"));
     const std::vector<bool> none(body.n_interface_points(), false);
     cholesky.trailing_inverse(factorization(none), compliance);
     // A unit contact force at point j is the load -normal e_j.

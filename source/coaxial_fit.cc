@@ -6,6 +6,7 @@
 #include <coaxfit/design_report.h>
 #include <coaxfit/input_error.h>
 #include <coaxfit/monolithic_solver.h>
+#include <coaxfit/mpi_session.h>
 #include <coaxfit/operation_analysis.h>
 #include <coaxfit/resources.h>
 #include <coaxfit/result_directory.h>
@@ -116,8 +117,11 @@ namespace coaxfit
       hub->setup_system();
       shaft->assemble_system();
       hub->assemble_system();
-      shaft_solver = std::make_unique<BodySolver>(*shaft);
-      hub_solver   = std::make_unique<BodySolver>(*hub);
+      amg_solver = use_amg(parameters);
+      if (amg_solver)
+        ensure_mpi_initialized();
+      shaft_solver = std::make_unique<BodySolver>(*shaft, amg_solver);
+      hub_solver   = std::make_unique<BodySolver>(*hub, amg_solver);
     }
 
     // The free body's factorization is needed by every staggered run (the
@@ -235,6 +239,12 @@ namespace coaxfit
     hub_field += hub_load_field;
     // The work of this state, before the analysis of operation adds more.
     statistics = coupling->statistics();
+    if (amg_solver)
+      {
+        statistics.solves["shaft_cg_iterations"]
+          = shaft_solver->n_cg_iterations();
+        statistics.solves["hub_cg_iterations"] = hub_solver->n_cg_iterations();
+      }
     return converged;
   }
 
@@ -295,6 +305,8 @@ namespace coaxfit
   CoaxialFit::use_condensed_operator() const
   {
     const InterfaceOperatorType type = parameters.coupling.interface_operator;
+    if (amg_solver) // no compliance without a factor
+      return false;
     return type == InterfaceOperatorType::condensed
            || (type == InterfaceOperatorType::automatic
                && interface->n_points() <= max_condensed_points);

@@ -246,7 +246,9 @@ namespace coaxfit
     // interference, the loads or the settings change: every value's
     // process starts from this set-up case (fork copies it).
     std::unique_ptr<CoaxialFit> prepared;
-    if (CoaxialFit::reusable_across(sweep.entry))
+    // (Not with AMG: MPI, which Trilinos needs, must not be started
+    // before the fork.)
+    if (CoaxialFit::reusable_across(sweep.entry) && !use_amg(base))
       for (BatchCase &c : cases)
         if (c.parameters)
           {

@@ -93,6 +93,16 @@ namespace coaxfit
       return n;
     }
 
+    const Names<LinearSolverType> &
+    names(LinearSolverType)
+    {
+      static const Names<LinearSolverType> n{
+        {"auto", LinearSolverType::automatic},
+        {"direct", LinearSolverType::direct},
+        {"amg", LinearSolverType::amg}};
+      return n;
+    }
+
     const Names<SweepFiles> &
     names(SweepFiles)
     {
@@ -209,6 +219,14 @@ namespace coaxfit
 
   std::string
   to_string(const SolverMethod value)
+  {
+    return name_of(value);
+  }
+
+
+
+  std::string
+  to_string(const LinearSolverType value)
   {
     return name_of(value);
   }
@@ -423,6 +441,23 @@ namespace coaxfit
                   "contact points tied and a primal-dual active set "
                   "for separation; the Coupling settings are not "
                   "used.");
+    add_selection(prm,
+                  "Linear solver",
+                  linear_solver,
+                  "How each body's systems are solved. direct: sparse "
+                  "Cholesky (CHOLMOD), factorized once per set of "
+                  "prescribed points; the interface compliance is the "
+                  "inverse of the factor's trailing block. amg: conjugate "
+                  "gradients preconditioned by Trilinos' algebraic "
+                  "multigrid (ML), the preconditioner built once per set "
+                  "of prescribed points and reused across coupling steps; "
+                  "needs less memory on large meshes (the coupling then "
+                  "solves both bodies at every step, Coupling/Interface "
+                  "operator = full; staggered method only; MPI is "
+                  "initialized for Trilinos, about 0.5 s). auto: direct "
+                  "while its estimated memory fits the available memory, "
+                  "amg beyond (benchmarks/README.md has the measured "
+                  "crossover).");
     prm.leave_subsection();
   }
 
@@ -800,6 +835,17 @@ namespace coaxfit
               + " mm (half the joint length: the maxima are taken between "
                 "the mid-plane and the band at the end of the joint)");
     mesh.validate();
+    if (solver.method == SolverMethod::monolithic
+        && solver.linear_solver == LinearSolverType::amg)
+      throw InputError("parameter Solver/Linear solver = amg: allowed with "
+                       "Solver/Method = staggered only (the monolithic "
+                       "reference factorizes its coupled system: give "
+                       "direct or auto)");
+    if (solver.linear_solver == LinearSolverType::amg
+        && coupling.interface_operator == InterfaceOperatorType::condensed)
+      throw InputError("parameter Coupling/Interface operator = condensed "
+                       "needs the factors of Solver/Linear solver = direct "
+                       "(with amg: full or auto)");
     shaft.validate("Material/Shaft");
     hub.validate("Material/Hub");
     operation.validate(2. * geometry.R1, geometry.R0 == 0.);

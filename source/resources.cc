@@ -72,15 +72,58 @@ namespace coaxfit
 
 
 
+  double
+  estimated_memory_amg(const std::size_t n_dofs, const unsigned int degree)
+  {
+    // Matrix (deal.II's and Trilinos' copy per set of prescribed points),
+    // hierarchy, vectors and mesh: linear in the DoFs. Calibrated in
+    // benchmarks (speed_benchmark.py): see benchmarks/README.md.
+    return 0.2e9 + 2500. * std::max(1., degree / 2.) * n_dofs;
+  }
+
+
+
+  namespace
+  {
+    std::size_t
+    run_dofs(const Parameters &parameters)
+    {
+      const unsigned int degree = parameters.mesh.degree;
+      return predicted_dofs(shaft_geometry(parameters), degree)
+             + predicted_dofs(hub_geometry(parameters), degree);
+    }
+  } // namespace
+
+
+
+  bool
+  use_amg(const Parameters &parameters)
+  {
+    if (parameters.solver.method == SolverMethod::monolithic)
+      return false;
+    switch (parameters.solver.linear_solver)
+      {
+        case LinearSolverType::direct:
+          return false;
+        case LinearSolverType::amg:
+          return true;
+        default:
+          return estimated_memory(run_dofs(parameters), parameters.mesh.degree)
+                 > available_memory();
+      }
+  }
+
+
+
   void
   check_memory(const Parameters &parameters)
   {
-    const unsigned int degree = parameters.mesh.degree;
-    const std::size_t  n_dofs
-      = predicted_dofs(shaft_geometry(parameters), degree)
-        + predicted_dofs(hub_geometry(parameters), degree);
-    const double needed    = estimated_memory(n_dofs, degree);
-    const double available = available_memory();
+    const unsigned int degree    = parameters.mesh.degree;
+    const std::size_t  n_dofs    = run_dofs(parameters);
+    const double       needed    = use_amg(parameters) ?
+                                     estimated_memory_amg(n_dofs, degree) :
+                                     estimated_memory(n_dofs, degree);
+    const double       available = available_memory();
     if (needed > available)
       throw InputError(
         "parameter Mesh/Global refinements = "

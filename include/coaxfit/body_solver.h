@@ -2,6 +2,8 @@
 #define coaxfit_body_solver_h
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <coaxfit/body_discretization.h>
@@ -26,11 +28,19 @@ namespace coaxfit
    * FactorizationCache. The symbolic analysis, with the interface points
    * ordered last, is shared by all sets, so the compliance on S is the
    * inverse of the trailing block of the free body's factor.
+   *
+   * With @p amg (Solver/Linear solver = amg) each set of prescribed points
+   * gets instead its matrix in Trilinos' format and an algebraic multigrid
+   * preconditioner (ML, with the translations as near-null space), built
+   * once and kept the same way; each solve is then conjugate gradients to
+   * a relative residual of 1e-12. No compliance is available then (the
+   * coupling solves both bodies at every step); MPI must be initialized
+   * (ensure_mpi_initialized()).
    */
   class BodySolver : public InterfaceOperator
   {
   public:
-    explicit BodySolver(const BodyDiscretization &body);
+    explicit BodySolver(const BodyDiscretization &body, bool amg = false);
 
     void
     solve(const std::vector<bool> &prescribed,
@@ -75,7 +85,15 @@ namespace coaxfit
     unsigned int
     n_factorizations() const override
     {
-      return factorizations.n_factorizations();
+      return amg ? amg_systems.n_factorizations() :
+                   factorizations.n_factorizations();
+    }
+
+    /** Conjugate gradient iterations of all solves so far (amg). */
+    unsigned int
+    n_cg_iterations() const
+    {
+      return cg_iterations;
     }
 
     /** Number of solves (each a forward and backward substitution). */
@@ -90,11 +108,33 @@ namespace coaxfit
     const SparseCholesky::Factor &
     factorization(const std::vector<bool> &prescribed);
 
+    /** A matrix and its AMG preconditioner (Solver/Linear solver = amg). */
+    struct AmgSystem
+    {
+      TrilinosWrappers::SparseMatrix    matrix;
+      TrilinosWrappers::PreconditionAMG preconditioner;
+    };
+
+    /** The AMG system of @p prescribed (built when first asked for). */
+    const AmgSystem &
+    amg_system(const std::vector<bool> &prescribed);
+
+    /** K with the prescribed points' rows and columns eliminated. */
+    SparseMatrix<double>
+    eliminated_matrix(const std::vector<bool> &prescribed) const;
+
+    /** Overwrite @p rhs with the solution of the system of @p prescribed. */
+    void
+    solve_system(const std::vector<bool> &prescribed, Vector<double> &rhs);
+
     const BodyDiscretization                  &body;
     SparseCholesky                             cholesky;
     bool                                       analyzed = false;
     FactorizationCache<SparseCholesky::Factor> factorizations;
     unsigned int                               solve_count = 0;
+    const bool                                 amg;
+    FactorizationCache<AmgSystem>              amg_systems;
+    unsigned int                               cg_iterations = 0;
   };
 } // namespace coaxfit
 

@@ -212,7 +212,8 @@ namespace coaxfit
                  const std::vector<std::string> &warnings) const;
 
     Parameters parameters;
-    bool       is_set_up = false;
+    bool       is_set_up  = false;
+    bool       amg_solver = false; ///< Solver/Linear solver, see use_amg()
     /** The coarser case of the corner trend, kept for reuse_for(). */
     std::unique_ptr<CoaxialFit>         coarse_twin;
     std::ostream                       &out;

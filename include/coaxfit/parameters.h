@@ -139,9 +139,18 @@ namespace coaxfit
     monolithic
   };
 
+  /** How each body's linear systems are solved (`Solver/Linear solver`). */
+  enum class LinearSolverType
+  {
+    automatic, ///< direct while its estimated memory fits, amg beyond
+    direct,    ///< CHOLMOD supernodal Cholesky
+    amg        ///< CG with Trilinos' algebraic multigrid (ML)
+  };
+
   struct SolverParameters
   {
-    SolverMethod method = SolverMethod::staggered;
+    SolverMethod     method        = SolverMethod::staggered;
+    LinearSolverType linear_solver = LinearSolverType::automatic;
 
     void
     declare_parameters(ParameterHandler &prm);
@@ -415,6 +424,8 @@ namespace coaxfit
   /** The name of an enumerator as written in a parameter file. */
   std::string
   to_string(SolverMethod value);
+  std::string
+  to_string(LinearSolverType value);
   std::string
   to_string(AlphaControllerPreset value);
   std::string

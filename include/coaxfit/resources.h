@@ -32,6 +32,18 @@ namespace coaxfit
    */
   void
   check_memory(const Parameters &parameters);
+
+  /**
+   * Whether the bodies are solved with AMG (Solver/Linear solver; auto:
+   * when the direct solver's estimated memory exceeds the available
+   * memory and AMG's does not).
+   */
+  bool
+  use_amg(const Parameters &parameters);
+
+  /** Estimated peak memory (bytes) of an AMG run with @p n_dofs. */
+  double
+  estimated_memory_amg(std::size_t n_dofs, unsigned int degree);
 } // namespace coaxfit
 
 #endif

@@ -241,6 +241,7 @@ namespace coaxfit
     statistics = coupling->statistics();
     if (amg_solver)
       {
+        statistics.linear_solver = "amg";
         statistics.solves["shaft_cg_iterations"]
           = shaft_solver->n_cg_iterations();
         statistics.solves["hub_cg_iterations"] = hub_solver->n_cg_iterations();

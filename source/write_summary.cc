@@ -1,4 +1,3 @@
-#include <coaxfit/resources.h>
 #include <coaxfit/result_writers.h>
 
 #include <cmath>
@@ -128,11 +127,10 @@ namespace coaxfit
       j["residuals"]
         = {{"displacement_relative", solver.displacement_residual()},
            {"traction_relative", solver.traction_residual()}};
-      j["solver"]
-        = {{"method", statistics.method},
-           {"linear_solver", use_amg(results.parameters) ? "amg" : "direct"},
-           {"factorizations", statistics.factorizations},
-           {"solves", statistics.solves}};
+      j["solver"] = {{"method", statistics.method},
+                     {"linear_solver", statistics.linear_solver},
+                     {"factorizations", statistics.factorizations},
+                     {"solves", statistics.solves}};
       return j;
     }
 

@@ -41,6 +41,7 @@ namespace coaxfit
   struct SolverStatistics
   {
     std::string                         method;
+    std::string                         linear_solver = "direct"; ///< or amg
     std::string                         alpha_rule;
     std::string                         accelerator;
     std::map<std::string, unsigned int> factorizations;

@@ -92,8 +92,8 @@ def restart_under_xvfb():
     """Without a display pvpython cannot render: run this script again under
     xvfb-run and exit with its exit code. A virtual X server that is not
     ready when the first window opens aborts pvpython (SIGABRT, "bad X
-    server connection", seen when several start at once): up to 3 tries,
-    each on a display of its own."""
+    server connection", seen when several start at once and on a busy
+    machine): up to 3 tries, each on a display of its own."""
     if os.environ.get("DISPLAY") or os.environ.get("COAXFIT_VIEW_XVFB"):
         return
     xvfb = shutil.which("xvfb-run")
@@ -107,7 +107,10 @@ def restart_under_xvfb():
     for attempt in range(3):
         server = 100 + (os.getpid() * 3 + attempt * 97) % 800
         code = subprocess.call([xvfb, "-a", "-n", str(server), interpreter] + sys.argv)
-        if code not in (134, -6):
+        # 0 done, 1 this script's own error message; anything else is
+        # pvpython aborted by the display (134, -6, or xvfb-run's own code,
+        # e.g. 5 when it could not clean up after the abort).
+        if code in (0, 1):
             break
         print("view.py: the virtual display failed (exit %d), trying again" % code,
               file=sys.stderr)

@@ -153,10 +153,7 @@ namespace coaxfit
     remove_stale_staging();
 
     std::lock_guard<std::mutex> lock(Interruption::mutex());
-    staging = (parent
-               / ("." + fs::path(target).filename().string() + partial_marker
-                  + std::to_string(::getpid())))
-                .string();
+    staging = staging_directory_of(target, ::getpid());
     fs::remove_all(staging, error);
     Interruption::set_staging(staging, target_name);
     if (::mkdir(staging.c_str(), 0777) != 0)

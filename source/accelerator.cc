@@ -245,7 +245,16 @@ namespace coaxfit
   {
     residuals.clear();
     outputs.clear();
-    prior.clear();
+    prior = base_prior;
+  }
+
+
+
+  void
+  IQNILSAcceleration::set_prior(std::vector<double> new_prior)
+  {
+    base_prior = std::move(new_prior);
+    prior      = base_prior;
   }
 
 

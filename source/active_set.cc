@@ -14,6 +14,16 @@ namespace coaxfit
 
 
 
+  void
+  UnilateralActiveSet::assume(const std::vector<bool> &flags)
+  {
+    AssertDimension(flags.size(), contact.size());
+    if (is_enabled)
+      contact = flags;
+  }
+
+
+
   unsigned int
   UnilateralActiveSet::clamp(Vector<double> &force) const
   {

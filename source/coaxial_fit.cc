@@ -183,7 +183,8 @@ namespace coaxfit
 
   std::unique_ptr<InterfaceSolver>
   CoaxialFit::make_solver(const ContactInterface &contact,
-                          const bool              unilateral)
+                          const bool              unilateral,
+                          const bool              start_from_coarse)
   {
     if (parameters.solver.method == SolverMethod::monolithic)
       return std::make_unique<MonolithicSolver>(
@@ -199,22 +200,11 @@ namespace coaxfit
     InterfaceOperator *hub_operator   = hub_solver.get();
     if (use_condensed_operator())
       {
-        if (!condensed_shaft)
-          {
-            TimerOutput::Scope scope(timer, "condensation");
-            concurrently(
-              [&]() {
-                condensed_shaft
-                  = std::make_unique<CondensedBody>(*shaft_solver);
-              },
-              [&]() {
-                condensed_hub = std::make_unique<CondensedBody>(*hub_solver);
-              });
-          }
+        condense();
         shaft_operator = condensed_shaft.get();
         hub_operator   = condensed_hub.get();
       }
-    return std::make_unique<StaggeredCoupling>(
+    auto staggered = std::make_unique<StaggeredCoupling>(
       *shaft_solver,
       *hub_solver,
       *shaft_operator,
@@ -223,6 +213,104 @@ namespace coaxfit
       parameters.coupling,
       UnilateralActiveSet(contact.n_points(), unilateral, active_set_mode()),
       parameters.contact.active_set_tolerance);
+    coarse_model.reset();
+    if (wants_coarse_model())
+      {
+        TimerOutput::Scope scope(timer, "coarse_case");
+        coarse_model = make_coarse_model(contact);
+        if (coarse_model)
+          {
+            staggered->use_coarse_model(*coarse_model);
+            if (start_from_coarse)
+              start_from_coarse_solution(*staggered);
+          }
+      }
+    return staggered;
+  }
+
+
+
+  void
+  CoaxialFit::condense()
+  {
+    if (!condensed_shaft)
+      {
+        TimerOutput::Scope scope(timer, "condensation");
+        concurrently(
+          [&]() {
+            condensed_shaft = std::make_unique<CondensedBody>(*shaft_solver);
+          },
+          [&]() {
+            condensed_hub = std::make_unique<CondensedBody>(*hub_solver);
+          });
+      }
+  }
+
+
+
+  double
+  CoaxialFit::short_wave_ratio() const
+  {
+    const Material &s = parameters.shaft;
+    const Material &h = parameters.hub;
+    return h.E * (1. - s.nu * s.nu) / (s.E * (1. - h.nu * h.nu));
+  }
+
+
+
+  void
+  CoaxialFit::start_from_coarse_solution(StaggeredCoupling &staggered)
+  {
+    coarse_twin->reuse_for(coarser_parameters());
+    twin_state = TwinState::failed;
+    try
+      {
+        coarse_twin->solve(nullptr);
+      }
+    catch (const SolverError &)
+      {
+        return; // the fine run starts as without a coarse mesh
+      }
+    twin_state                    = TwinState::solved;
+    const InterfaceSolver &coarse = *coarse_twin->coupling;
+    if (!coarse.converged())
+      return;
+    staggered.start_from(coarse_model->prolongate(coarse.contact_force()),
+                         coarse_model->prolongate(
+                           coarse.get_active_set().in_contact()),
+                         coarse.history().size());
+  }
+
+
+
+  bool
+  CoaxialFit::wants_coarse_model() const
+  {
+    return parameters.coupling.coarse_model
+           && parameters.coupling.accelerator() == AcceleratorType::iqn_ils
+           && parameters.solver.method != SolverMethod::monolithic
+           && parameters.mesh.global_refinements > 0 && !amg_solver;
+  }
+
+
+
+  std::unique_ptr<CoarseInterfaceModel>
+  CoaxialFit::make_coarse_model(const ContactInterface &contact)
+  {
+    if (!coarse_twin)
+      {
+        coarse_twin
+          = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
+        coarse_twin->setup_system();
+      }
+    if (coarse_twin->interface->n_points() > max_condensed_points)
+      return nullptr;
+    coarse_twin->condense();
+    return std::make_unique<CoarseInterfaceModel>(*coarse_twin->condensed_shaft,
+                                                  *coarse_twin->condensed_hub,
+                                                  *coarse_twin->interface,
+                                                  contact,
+                                                  short_wave_ratio());
   }
 
 
@@ -230,7 +318,7 @@ namespace coaxfit
   bool
   CoaxialFit::solve(std::ostream *progress)
   {
-    coupling = make_solver(*interface, parameters.contact.unilateral);
+    coupling = make_solver(*interface, parameters.contact.unilateral, true);
     TimerOutput::Scope scope(timer, "coupling");
     const bool         converged     = coupling->run(progress);
     std::tie(shaft_field, hub_field) = coupling->solve_fields();
@@ -483,6 +571,7 @@ namespace coaxfit
                                     "loads",
                                     "factorization",
                                     "condensation",
+                                    "coarse_case",
                                     "coupling",
                                     "corner_trend",
                                     "operation",
@@ -503,7 +592,8 @@ namespace coaxfit
       pcout << std::fixed << std::setprecision(3) << "  wall time: setup "
             << timing["setup"] << " s, loads " << timing["loads"]
             << " s, factorization " << timing["factorization"]
-            << " s, condensation " << timing["condensation"] << " s, coupling "
+            << " s, condensation " << timing["condensation"]
+            << " s, coarse case " << timing["coarse_case"] << " s, coupling "
             << timing["coupling"] << " s, corner trend "
             << timing["corner_trend"] << " s, output " << timing["output"]
             << " s, total " << timing["total"] << " s\n";
@@ -515,21 +605,28 @@ namespace coaxfit
   CoaxialFit::coarser_corner_values()
   {
     const Parameters coarse = coarser_parameters();
-    if (coarse_twin)
-      coarse_twin->reuse_for(coarse);
-    else
-      prepare_corner_trend();
-    CoaxialFit &fit = *coarse_twin;
-    try
+    // Solved already when the coupling started from it.
+    if (twin_state == TwinState::stale)
       {
-        fit.solve(nullptr);
+        if (coarse_twin)
+          coarse_twin->reuse_for(coarse);
+        else
+          prepare_corner_trend();
+        try
+          {
+            coarse_twin->solve(nullptr);
+            twin_state = TwinState::solved;
+          }
+        catch (const SolverError &)
+          {
+            twin_state = TwinState::failed;
+          }
       }
-    catch (const SolverError &)
-      {
-        // Only a figure of the report depends on it: said there as not
-        // available; the run itself is unaffected.
-        return {};
-      }
+    // Only a figure of the report depends on it: said there as not
+    // available; the run itself is unaffected.
+    if (twin_state == TwinState::failed)
+      return {};
+    CoaxialFit         &fit = *coarse_twin;
     const FitDesign     coarse_design(coarse,
                                   *fit.shaft,
                                   fit.shaft_field,
@@ -565,7 +662,8 @@ namespace coaxfit
   {
     Parameters coarse = parameters;
     --coarse.mesh.global_refinements;
-    coarse.design.corner_trend = false;
+    coarse.design.corner_trend   = false;
+    coarse.coupling.coarse_model = false;
     return coarse;
   }
 
@@ -574,12 +672,15 @@ namespace coaxfit
   void
   CoaxialFit::prepare_corner_trend()
   {
-    if (coarse_twin || !parameters.design.corner_trend
+    if (coarse_twin || !(parameters.design.corner_trend || wants_coarse_model())
         || parameters.mesh.global_refinements == 0)
       return;
     coarse_twin
       = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
     coarse_twin->setup_system();
+    if (wants_coarse_model()
+        && coarse_twin->interface->n_points() <= max_condensed_points)
+      coarse_twin->condense();
   }
 
 
@@ -607,6 +708,7 @@ namespace coaxfit
     hub->set_load(body_load(parameters, false));
     coupling.reset();
     design.reset();
+    twin_state = TwinState::stale;
     setup_loads();
   }
 

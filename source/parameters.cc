@@ -156,6 +156,33 @@ namespace coaxfit
       });
     }
 
+    /**
+     * The value of an entry that is auto (returned as 0) or a number
+     * 0 < x < 1 called @p symbol in messages; throws an InputError naming
+     * @p entry otherwise.
+     */
+    double
+    auto_or_fraction(const std::string &entry,
+                     const std::string &symbol,
+                     const std::string &text)
+    {
+      if (text == "auto")
+        return 0.;
+      const std::string allowed
+        = ": allowed is auto or 0 < " + symbol + " < 1.";
+      std::istringstream in(text);
+      double             value = 0.;
+      if (!(in >> value) || !(in >> std::ws).eof())
+        throw InputError("parameter " + entry + " = " + text
+                         + " is not a number" + allowed);
+      if (!(value > 0. && value < 1.))
+        throw InputError("parameter " + entry + " = " + text
+                         + " is out of range" + allowed);
+      return value;
+    }
+
+
+
     std::string
     base_name(const std::string &filename)
     {
@@ -557,6 +584,23 @@ namespace coaxfit
                   "points), so the first step after the "
                   "change is already a quasi-Newton step. Measured on the "
                   "separating variants: benchmarks/README.md.");
+    prm.declare_entry(
+      "Coarse model",
+      "auto",
+      Patterns::Selection("auto|none"),
+      "Prior of the quasi-Newton model (iqn-ils): the inverse Jacobian of "
+      "the process on the same case meshed one refinement coarser, formed "
+      "with that mesh's condensed interface operators for the run's alpha "
+      "and contact points (again after every change of the contact "
+      "points), so that the first accelerated step already corrects the "
+      "long waves of the interface and the history only has to learn what "
+      "the coarse mesh cannot represent (multi-level acceleration). auto: "
+      "used when there is such a mesh (Mesh/Global refinements >= 1), the "
+      "linear solver is direct and the coarse interface has at most 2000 "
+      "points; none: plain IQN-ILS. Measured: benchmarks/README.md.");
+    prm.add_action("Coarse model", [this](const std::string &value) {
+      coarse_model = value == "auto";
+    });
     prm.declare_entry("Beta",
                       "auto",
                       Patterns::Anything(),
@@ -566,22 +610,7 @@ namespace coaxfit
                       "the first steps' residuals among 0.5, 0.3 and 0.15 "
                       "or 0.7. Allowed: auto or 0 < beta < 1.");
     prm.add_action("Beta", [this](const std::string &text) {
-      if (text == "auto")
-        {
-          beta = 0.;
-          return;
-        }
-      std::istringstream in(text);
-      double             value = 0.;
-      if (!(in >> value) || !(in >> std::ws).eof())
-        throw InputError("parameter Coupling/Beta = " + text
-                         + " is not a number: allowed is auto or "
-                           "0 < beta < 1.");
-      if (!(value > 0. && value < 1.))
-        throw InputError("parameter Coupling/Beta = " + text
-                         + " is out of range: allowed is auto or "
-                           "0 < beta < 1.");
-      beta = value;
+      beta = auto_or_fraction("Coupling/Beta", "beta", text);
     });
     prm.add_parameter("Aitken initial omega",
                       aitken_omega,
@@ -704,20 +733,26 @@ namespace coaxfit
                   "iqn-ils) need this. auto: every step without an "
                   "accelerator and with the fixed rule, when converged "
                   "otherwise.");
-    prm.add_parameter("Active set tolerance",
-                      active_set_tolerance,
-                      "In the when-converged mode the flags are updated "
-                      "once both relative mismatches are below this value "
-                      "(or Coupling/Tolerance if larger). Each update "
-                      "restarts the accelerator, so a rough first guess "
-                      "of the zone is cheaper than an accurate one: 0.1 "
-                      "halves the steps of the separating variants "
-                      "against 1e-4. If an update returns to flags seen "
-                      "before (a cycle), the value is divided by 100 for "
-                      "the rest of the run. The final flags are always "
-                      "checked at Coupling/Tolerance. Allowed: "
-                      "0 < tol < 1.",
-                      Patterns::Double(0., 1.));
+    prm.declare_entry(
+      "Active set tolerance",
+      "auto",
+      Patterns::Anything(),
+      "In the when-converged mode the flags are updated once both "
+      "relative mismatches are below this value (or Coupling/Tolerance if "
+      "larger). Each update restarts the accelerator, so from a uniform "
+      "start a rough first guess of the zone is cheaper than an accurate "
+      "one (0.1 halves the steps of the separating variants against "
+      "1e-4), while flags predicted by the coarser mesh (Coupling/Coarse "
+      "model) are better than any update from a rough state. auto: 1e-2 "
+      "when the run starts from the coarser mesh's solution, 0.1 "
+      "otherwise. If an update returns to flags seen before (a cycle), the "
+      "value is divided by 100 for the rest of the run. The final flags "
+      "are always checked at Coupling/Tolerance. Allowed: auto or "
+      "0 < tol < 1.");
+    prm.add_action("Active set tolerance", [this](const std::string &text) {
+      active_set_tolerance
+        = auto_or_fraction("Contact/Active set tolerance", "tol", text);
+    });
     prm.leave_subsection();
   }
 
@@ -726,10 +761,10 @@ namespace coaxfit
   void
   ContactParameters::validate() const
   {
-    require(active_set_tolerance > 0. && active_set_tolerance < 1.,
+    require(active_set_tolerance >= 0. && active_set_tolerance < 1.,
             "Contact/Active set tolerance",
             active_set_tolerance,
-            "0 < tol < 1");
+            "auto or 0 < tol < 1");
   }
 
 

@@ -54,9 +54,11 @@ namespace coaxfit
     , accelerated(parameters.accelerator() != AcceleratorType::none)
     , tolerance(parameters.tolerance)
     , max_steps(parameters.max_steps)
-    , active_set_tolerance(std::max(active_set_tolerance, parameters.tolerance))
-    , initial_active_set_tolerance(
-        std::max(active_set_tolerance, parameters.tolerance))
+    , active_set_tolerance(
+        std::max(active_set_tolerance > 0. ? active_set_tolerance : 0.1,
+                 parameters.tolerance))
+    , initial_active_set_tolerance(this->active_set_tolerance)
+    , automatic_active_set_tolerance(active_set_tolerance == 0.)
     , tolerance_floor(parameters.tolerance)
     , history_on_change(parameters.history_on_change)
   {}
@@ -69,7 +71,7 @@ namespace coaxfit
     force = next_force;
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
-    if (history_rows.empty() && start_loaded)
+    if (history_rows.empty() && start_loaded && initial_force.size() == 0)
       scale_first_load();
     update_active_set();
     last_displacement_mismatch
@@ -181,6 +183,7 @@ namespace coaxfit
 
     active_set.clamp(force);
     next_force = force;
+    update_prior();
     accelerator->accelerate(neumann_force, next_force);
     active_set.clamp(next_force);
 
@@ -191,6 +194,54 @@ namespace coaxfit
        interface.relative_gap_residual(u1, u2, active_set.in_contact()),
        last_traction_mismatch,
        active_set.n_separated()});
+  }
+
+
+
+  void
+  StaggeredCoupling::use_coarse_model(CoarseInterfaceModel &model)
+  {
+    coarse_model = &model;
+  }
+
+
+
+  void
+  StaggeredCoupling::start_from(const Vector<double>    &force,
+                                const std::vector<bool> &contact,
+                                const unsigned int       coarse_steps)
+  {
+    initial_force      = force;
+    coarse_start_steps = coarse_steps;
+    active_set.assume(contact);
+    // Predicted flags are better than an update from a rough state.
+    if (automatic_active_set_tolerance)
+      initial_active_set_tolerance = std::max(1e-2, tolerance_floor);
+  }
+
+
+
+  void
+  StaggeredCoupling::update_prior()
+  {
+    // Only with a fixed alpha is the accelerated map fixed; the model
+    // learned across a change (Active set change = model) is kept.
+    if (coarse_model == nullptr || !rule->estimated())
+      return;
+    const unsigned int  n = force.size();
+    std::vector<double> alpha(n);
+    for (unsigned int i = 0; i < n; ++i)
+      alpha[i] = rule->alpha(i);
+    const std::vector<bool> &contact = active_set.in_contact();
+    if (alpha == prior_alpha && contact == prior_contact)
+      return;
+    if (!prior_alpha.empty() && history_on_change == HistoryOnChange::model)
+      return;
+    accelerator->set_prior(
+      coarse_model->inverse_jacobian_prior(alpha, contact));
+    prior_alpha   = alpha;
+    prior_contact = contact;
+    ++n_coarse_priors;
   }
 
 
@@ -457,6 +508,11 @@ namespace coaxfit
     start_loaded = rule->adaptive();
     if (start_loaded)
       next_force = interface.weights();
+    if (initial_force.size() == n)
+      {
+        next_force   = initial_force;
+        start_loaded = true;
+      }
     u1.reinit(n);
     u2.reinit(n);
     history_rows.clear();
@@ -510,9 +566,15 @@ namespace coaxfit
   StaggeredCoupling::statistics() const
   {
     SolverStatistics s;
-    s.method         = "staggered";
-    s.alpha_rule     = rule->name();
-    s.accelerator    = accelerator->name();
+    s.method      = "staggered";
+    s.alpha_rule  = rule->name();
+    s.accelerator = accelerator->name();
+    if (coarse_model != nullptr)
+      {
+        s.coarse_model_points = coarse_model->n_coarse_points();
+        s.coarse_priors       = n_coarse_priors;
+        s.coarse_start_steps  = coarse_start_steps;
+      }
     s.factorizations = {{"shaft", shaft_solver.n_factorizations()},
                         {"hub", hub_solver.n_factorizations()}};
     if (&shaft != &shaft_solver)

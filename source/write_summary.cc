@@ -121,6 +121,9 @@ namespace coaxfit
                                                 to_string(c.controller)},
            {"alpha_rule", statistics.alpha_rule},
            {"accelerator", statistics.accelerator},
+           {"coarse_model_points", statistics.coarse_model_points},
+           {"coarse_priors", statistics.coarse_priors},
+           {"coarse_start_steps", statistics.coarse_start_steps},
            {"tolerance", c.tolerance},
            {"max_steps", c.max_steps},
            {"alpha_history", alpha}};

@@ -64,6 +64,18 @@ namespace coaxfit
       (void)changed;
       restart();
     }
+
+    /**
+     * A model of the inverse Jacobian J (n x n row-major, the step being
+     * x_{k+1} = G(x_k) + J r_k) known before any history, kept through
+     * restart(); an empty @p prior removes it. Accelerators without such a
+     * model ignore it.
+     */
+    virtual void
+    set_prior(std::vector<double> prior)
+    {
+      (void)prior;
+    }
   };
 
   /** The plain iteration x_{k+1} = G(x_k). */
@@ -152,6 +164,10 @@ namespace coaxfit
     void
     keep_model(const std::vector<bool> &changed) override;
 
+    /** The prior of every model from now on (IQN-IMVJ with that prior). */
+    void
+    set_prior(std::vector<double> prior) override;
+
   private:
     /**
      * The filtered least-squares model of the history: the kept difference
@@ -184,8 +200,9 @@ namespace coaxfit
     const unsigned int          max_columns;
     const double                filter;
     std::vector<double>         prior; ///< J_prior, n x n row-major or empty
-    std::vector<Vector<double>> residuals; ///< r_k, oldest first
-    std::vector<Vector<double>> outputs;   ///< G(x_k), oldest first
+    std::vector<double>         base_prior; ///< the prior restart() returns to
+    std::vector<Vector<double>> residuals;  ///< r_k, oldest first
+    std::vector<Vector<double>> outputs;    ///< G(x_k), oldest first
   };
 
   /** The accelerator selected in @p parameters. */

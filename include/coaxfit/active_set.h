@@ -73,6 +73,13 @@ namespace coaxfit
     bool
     update(const Vector<double> &force, const Vector<double> &gap);
 
+    /**
+     * Start from the flags @p flags (a prediction, e.g. of a coarser mesh);
+     * ignored if the pass is disabled. Not counted as a change.
+     */
+    void
+    assume(const std::vector<bool> &flags);
+
     /** Contact flag of every point (the Dirichlet step's prescribed set). */
     const std::vector<bool> &
     in_contact() const

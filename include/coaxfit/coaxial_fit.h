@@ -6,12 +6,14 @@
 
 #include <coaxfit/body_discretization.h>
 #include <coaxfit/body_solver.h>
+#include <coaxfit/coarse_interface_model.h>
 #include <coaxfit/condensed_body.h>
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/fit_design.h>
 #include <coaxfit/interface_solver.h>
 #include <coaxfit/parameters.h>
 #include <coaxfit/pressure_summary.h>
+#include <coaxfit/staggered_coupling.h>
 
 #include <map>
 #include <memory>
@@ -102,8 +104,10 @@ namespace coaxfit
 
     /**
      * Set up the case one refinement coarser that the corner trend of the
-     * report solves (if Design/Corner trend asks for it), so that cases
-     * made from this one by reuse_for() reuse its setup too.
+     * report solves (if Design/Corner trend asks for it) and the coarse
+     * model of the coupling uses (Coupling/Coarse model; its condensed
+     * operators formed too), so that cases made from this one by
+     * reuse_for() reuse its setup.
      */
     void
     prepare_corner_trend();
@@ -177,6 +181,9 @@ namespace coaxfit
     bool
     use_condensed_operator() const;
 
+    /** Form the bodies' condensed operators if not yet formed. */
+    void
+    condense();
     /** The active set update mode (auto resolved). */
     UnilateralActiveSet::Update
     active_set_mode() const;
@@ -187,7 +194,17 @@ namespace coaxfit
      * the monolithic reference.
      */
     std::unique_ptr<InterfaceSolver>
-    make_solver(const ContactInterface &contact, bool unilateral);
+    make_solver(const ContactInterface &contact,
+                bool                    unilateral,
+                bool                    start_from_coarse = false);
+    /**
+     * Solve the case one refinement coarser and start @p staggered from its
+     * contact force and flags (nested iteration); the corner trend then
+     * reuses that solution. Without a coarse solution the start stays the
+     * uniform pressure.
+     */
+    void
+    start_from_coarse_solution(StaggeredCoupling &staggered);
 
     /**
      * The von Mises stresses at the end of the joint (hub bore, shaft
@@ -197,6 +214,25 @@ namespace coaxfit
     std::vector<double>
     coarser_corner_values();
 
+    /**
+     * Whether the coupling takes the prior of its quasi-Newton model from
+     * the case one refinement coarser (Coupling/Coarse model).
+     */
+    bool
+    wants_coarse_model() const;
+    /**
+     * Ratio shaft / hub of the interface compliances of short waves (both
+     * bodies half-spaces): E_hub (1 - nu_shaft^2) / (E_shaft (1 - nu_hub^2)).
+     */
+    double
+    short_wave_ratio() const;
+    /**
+     * The coarse model for the interface @p contact of this case (the
+     * coarser case set up, its condensed operators formed); null if the
+     * coarser interface is too large to condense.
+     */
+    std::unique_ptr<CoarseInterfaceModel>
+    make_coarse_model(const ContactInterface &contact);
     /** This case one refinement coarser, without its own corner trend. */
     Parameters
     coarser_parameters() const;
@@ -215,18 +251,27 @@ namespace coaxfit
     bool       is_set_up  = false;
     bool       amg_solver = false; ///< Solver/Linear solver, see use_amg()
     /** The coarser case of the corner trend, kept for reuse_for(). */
-    std::unique_ptr<CoaxialFit>         coarse_twin;
-    std::ostream                       &out;
-    ConditionalOStream                  pcout;
-    std::unique_ptr<BodyDiscretization> shaft, hub;
-    std::unique_ptr<BodySolver>         shaft_solver, hub_solver;
-    std::unique_ptr<CondensedBody>      condensed_shaft, condensed_hub;
-    std::unique_ptr<ContactInterface>   interface;
-    std::unique_ptr<InterfaceSolver>    coupling;
-    std::unique_ptr<FitDesign>          design;
-    Vector<double>                      shaft_field, hub_field;
-    SolverStatistics                    statistics;  ///< after solve()
-    Vector<double> shaft_load_field, hub_load_field; ///< loads alone
+    std::unique_ptr<CoaxialFit> coarse_twin;
+    /** Whether coarse_twin holds the solution of this case's parameters. */
+    enum class TwinState
+    {
+      stale,  ///< not solved for the current parameters
+      solved, ///< solved (converged or not)
+      failed  ///< its coupling threw a SolverError
+    } twin_state
+      = TwinState::stale;
+    std::ostream                         &out;
+    ConditionalOStream                    pcout;
+    std::unique_ptr<BodyDiscretization>   shaft, hub;
+    std::unique_ptr<BodySolver>           shaft_solver, hub_solver;
+    std::unique_ptr<CondensedBody>        condensed_shaft, condensed_hub;
+    std::unique_ptr<ContactInterface>     interface;
+    std::unique_ptr<CoarseInterfaceModel> coarse_model; ///< of coupling
+    std::unique_ptr<InterfaceSolver>      coupling;
+    std::unique_ptr<FitDesign>            design;
+    Vector<double>                        shaft_field, hub_field;
+    SolverStatistics                      statistics; ///< after solve()
+    Vector<double> shaft_load_field, hub_load_field;  ///< loads alone
     TimerOutput    timer;
   };
 } // namespace coaxfit

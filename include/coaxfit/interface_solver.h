@@ -40,10 +40,18 @@ namespace coaxfit
    */
   struct SolverStatistics
   {
-    std::string                         method;
-    std::string                         linear_solver = "direct"; ///< or amg
-    std::string                         alpha_rule;
-    std::string                         accelerator;
+    std::string method;
+    std::string linear_solver = "direct"; ///< or amg
+    std::string alpha_rule;
+    std::string accelerator;
+    /**
+     * Points of the coarse model whose Jacobian is the quasi-Newton prior
+     * (0: none), and how many priors it formed.
+     */
+    unsigned int coarse_model_points = 0;
+    unsigned int coarse_priors       = 0;
+    /** Steps of the coarser mesh's solution the run started from. */
+    unsigned int                        coarse_start_steps = 0;
     std::map<std::string, unsigned int> factorizations;
     std::map<std::string, unsigned int> solves;
   };

@@ -223,6 +223,8 @@ namespace coaxfit
     double                iqn_filter         = 1e-10;
     InterfaceOperatorType interface_operator = InterfaceOperatorType::automatic;
     HistoryOnChange       history_on_change  = HistoryOnChange::restart;
+    /** Coupling/Coarse model: true for auto, false for none. */
+    bool coarse_model = true;
 
     void
     declare_parameters(ParameterHandler &prm);
@@ -259,9 +261,10 @@ namespace coaxfit
   /** Subsection `Contact`: the unilateral pass. */
   struct ContactParameters
   {
-    bool                unilateral           = true;
-    ActiveSetUpdateType active_set_update    = ActiveSetUpdateType::automatic;
-    double              active_set_tolerance = 1e-1;
+    bool                unilateral        = true;
+    ActiveSetUpdateType active_set_update = ActiveSetUpdateType::automatic;
+    /** 0: auto (1e-2 from a coarse start, 0.1 otherwise). */
+    double active_set_tolerance = 0.;
 
     void
     declare_parameters(ParameterHandler &prm);

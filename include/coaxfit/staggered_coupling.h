@@ -4,6 +4,7 @@
 #include <coaxfit/accelerator.h>
 #include <coaxfit/alpha_rule.h>
 #include <coaxfit/body_solver.h>
+#include <coaxfit/coarse_interface_model.h>
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/interface_operator.h>
 #include <coaxfit/interface_solver.h>
@@ -45,6 +46,7 @@ namespace coaxfit
     /**
      * The coupling iterates with the operators @p shaft and @p hub (full or
      * condensed); @p shaft_solver and @p hub_solver give the final fields.
+     * @p active_set_tolerance is Contact/Active set tolerance (0: auto).
      */
     StaggeredCoupling(BodySolver                &shaft_solver,
                       BodySolver                &hub_solver,
@@ -61,6 +63,24 @@ namespace coaxfit
      */
     bool
     run(std::ostream *progress) override;
+
+    /**
+     * Give the accelerator the inverse Jacobian of @p model (the same case
+     * one refinement coarser) as its prior, formed for the current alpha
+     * and contact points whenever they change (Coupling/Coarse model).
+     */
+    void
+    use_coarse_model(CoarseInterfaceModel &model);
+
+    /**
+     * Start from the nodal contact force @p force and the contact flags
+     * @p contact (the coarser mesh's solution, which took @p coarse_steps
+     * steps) instead of a uniform pressure.
+     */
+    void
+    start_from(const Vector<double>    &force,
+               const std::vector<bool> &contact,
+               unsigned int             coarse_steps);
 
     std::pair<Vector<double>, Vector<double>>
     solve_fields() override;
@@ -97,6 +117,13 @@ namespace coaxfit
      */
     void
     scale_first_load();
+
+    /**
+     * Form the coarse model's prior for the current alpha and contact
+     * points if they differ from those of the prior in use.
+     */
+    void
+    update_prior();
 
     /** Throw a SolverError if the residuals grow or are not finite. */
     void
@@ -150,15 +177,26 @@ namespace coaxfit
      * set of flags seen before: updates from states that are too rough
      * can cycle between zones.
      */
-    double       active_set_tolerance;
-    const double initial_active_set_tolerance;
+    double active_set_tolerance;
+    double initial_active_set_tolerance;
+    /** Contact/Active set tolerance = auto: 0.1, 1e-2 from a coarse start. */
+    const bool   automatic_active_set_tolerance;
     const double tolerance_floor;
     /** Every set of flags the iteration has had. */
     std::set<std::vector<bool>> visited_sets;
     /** What the accelerator keeps when the contact points change. */
     const HistoryOnChange history_on_change;
-    bool                  active_set_verified = false;
-    unsigned int          last_change_step    = 0;
+    /** The coarse model of the prior; null without one. */
+    CoarseInterfaceModel *coarse_model = nullptr;
+    /** Alpha and contact points of the prior in use. */
+    std::vector<double> prior_alpha;
+    std::vector<bool>   prior_contact;
+    unsigned int        n_coarse_priors = 0;
+    /** Force of a given start (start_from()); empty: uniform pressure. */
+    Vector<double> initial_force;
+    unsigned int   coarse_start_steps  = 0;
+    bool           active_set_verified = false;
+    unsigned int   last_change_step    = 0;
   };
 } // namespace coaxfit
 

@@ -216,7 +216,7 @@ namespace coaxfit
     active_set.assume(contact);
     // Predicted flags are better than an update from a rough state.
     if (automatic_active_set_tolerance)
-      initial_active_set_tolerance = std::max(1e-2, tolerance_floor);
+      initial_active_set_tolerance = std::max(1e-3, tolerance_floor);
   }
 
 

@@ -213,16 +213,16 @@ namespace coaxfit
       parameters.coupling,
       UnilateralActiveSet(contact.n_points(), unilateral, active_set_mode()),
       parameters.contact.active_set_tolerance);
-    coarse_model.reset();
     if (wants_coarse_model())
       {
-        TimerOutput::Scope scope(timer, "coarse_case");
-        coarse_model = make_coarse_model(contact);
-        if (coarse_model)
+        TimerOutput::Scope                    scope(timer, "coarse_case");
+        std::unique_ptr<CoarseInterfaceModel> model
+          = make_coarse_model(contact);
+        if (model)
           {
-            staggered->use_coarse_model(*coarse_model);
             if (start_from_coarse)
-              start_from_coarse_solution(*staggered);
+              start_from_coarse_solution(*staggered, *model);
+            staggered->use_coarse_model(std::move(model));
           }
       }
     return staggered;
@@ -259,7 +259,8 @@ namespace coaxfit
 
 
   void
-  CoaxialFit::start_from_coarse_solution(StaggeredCoupling &staggered)
+  CoaxialFit::start_from_coarse_solution(StaggeredCoupling          &staggered,
+                                         const CoarseInterfaceModel &model)
   {
     coarse_twin->reuse_for(coarser_parameters());
     twin_state = TwinState::failed;
@@ -275,9 +276,8 @@ namespace coaxfit
     const InterfaceSolver &coarse = *coarse_twin->coupling;
     if (!coarse.converged())
       return;
-    staggered.start_from(coarse_model->prolongate(coarse.contact_force()),
-                         coarse_model->prolongate(
-                           coarse.get_active_set().in_contact()),
+    staggered.start_from(model.prolongate(coarse.contact_force()),
+                         model.prolongate(coarse.get_active_set().in_contact()),
                          coarse.history().size());
   }
 

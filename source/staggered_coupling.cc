@@ -199,9 +199,10 @@ namespace coaxfit
 
 
   void
-  StaggeredCoupling::use_coarse_model(CoarseInterfaceModel &model)
+  StaggeredCoupling::use_coarse_model(
+    std::unique_ptr<CoarseInterfaceModel> model)
   {
-    coarse_model = &model;
+    coarse_model = std::move(model);
   }
 
 
@@ -226,7 +227,7 @@ namespace coaxfit
   {
     // Only with a fixed alpha is the accelerated map fixed; the model
     // learned across a change (Active set change = model) is kept.
-    if (coarse_model == nullptr || !rule->estimated())
+    if (!coarse_model || !rule->estimated())
       return;
     const unsigned int  n = force.size();
     std::vector<double> alpha(n);
@@ -569,7 +570,7 @@ namespace coaxfit
     s.method      = "staggered";
     s.alpha_rule  = rule->name();
     s.accelerator = accelerator->name();
-    if (coarse_model != nullptr)
+    if (coarse_model)
       {
         s.coarse_model_points = coarse_model->n_coarse_points();
         s.coarse_priors       = n_coarse_priors;

@@ -113,9 +113,7 @@ namespace
     const unsigned int   n = shaft->n_interface_points();
     const Vector<double> zero(n);
     const ContactInterface interface(*shaft, *hub, p.geometry.d, zero, zero);
-    CoarseInterfaceModel   self(
-      shaft_operator, hub_operator, interface, interface, 1.);
-    StaggeredCoupling coupling(
+    StaggeredCoupling      coupling(
       shaft_solver,
       hub_solver,
       shaft_operator,
@@ -126,7 +124,8 @@ namespace
                           false,
                           UnilateralActiveSet::Update::when_converged),
       0.);
-    coupling.use_coarse_model(self);
+    coupling.use_coarse_model(std::make_unique<CoarseInterfaceModel>(
+      shaft_operator, hub_operator, interface, interface, 1.));
     const bool converged = coupling.run(nullptr);
     std::cout << label << ", the fine mesh as its own model: "
               << (converged ? "converged" : "NOT converged") << " in "

@@ -199,12 +199,14 @@ namespace coaxfit
                 bool                    start_from_coarse = false);
     /**
      * Solve the case one refinement coarser and start @p staggered from its
-     * contact force and flags (nested iteration); the corner trend then
+     * contact force and flags, transferred by @p model (nested
+     * iteration); the corner trend then
      * reuses that solution. Without a coarse solution the start stays the
      * uniform pressure.
      */
     void
-    start_from_coarse_solution(StaggeredCoupling &staggered);
+    start_from_coarse_solution(StaggeredCoupling          &staggered,
+                               const CoarseInterfaceModel &model);
 
     /**
      * The von Mises stresses at the end of the joint (hub bore, shaft
@@ -260,18 +262,17 @@ namespace coaxfit
       failed  ///< its coupling threw a SolverError
     } twin_state
       = TwinState::stale;
-    std::ostream                         &out;
-    ConditionalOStream                    pcout;
-    std::unique_ptr<BodyDiscretization>   shaft, hub;
-    std::unique_ptr<BodySolver>           shaft_solver, hub_solver;
-    std::unique_ptr<CondensedBody>        condensed_shaft, condensed_hub;
-    std::unique_ptr<ContactInterface>     interface;
-    std::unique_ptr<CoarseInterfaceModel> coarse_model; ///< of coupling
-    std::unique_ptr<InterfaceSolver>      coupling;
-    std::unique_ptr<FitDesign>            design;
-    Vector<double>                        shaft_field, hub_field;
-    SolverStatistics                      statistics; ///< after solve()
-    Vector<double> shaft_load_field, hub_load_field;  ///< loads alone
+    std::ostream                       &out;
+    ConditionalOStream                  pcout;
+    std::unique_ptr<BodyDiscretization> shaft, hub;
+    std::unique_ptr<BodySolver>         shaft_solver, hub_solver;
+    std::unique_ptr<CondensedBody>      condensed_shaft, condensed_hub;
+    std::unique_ptr<ContactInterface>   interface;
+    std::unique_ptr<InterfaceSolver>    coupling;
+    std::unique_ptr<FitDesign>          design;
+    Vector<double>                      shaft_field, hub_field;
+    SolverStatistics                    statistics;  ///< after solve()
+    Vector<double> shaft_load_field, hub_load_field; ///< loads alone
     TimerOutput    timer;
   };
 } // namespace coaxfit

@@ -70,7 +70,7 @@ namespace coaxfit
      * and contact points whenever they change (Coupling/Coarse model).
      */
     void
-    use_coarse_model(CoarseInterfaceModel &model);
+    use_coarse_model(std::unique_ptr<CoarseInterfaceModel> model);
 
     /**
      * Start from the nodal contact force @p force and the contact flags
@@ -187,7 +187,7 @@ namespace coaxfit
     /** What the accelerator keeps when the contact points change. */
     const HistoryOnChange history_on_change;
     /** The coarse model of the prior; null without one. */
-    CoarseInterfaceModel *coarse_model = nullptr;
+    std::unique_ptr<CoarseInterfaceModel> coarse_model;
     /** Alpha and contact points of the prior in use. */
     std::vector<double> prior_alpha;
     std::vector<bool>   prior_contact;

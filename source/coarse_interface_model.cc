@@ -50,6 +50,28 @@ namespace coaxfit
 
 
 
+  bool
+  CoarseInterfaceModel::nested(const ContactInterface &coarse,
+                               const ContactInterface &fine)
+  {
+    const std::vector<double> &zc = coarse.z();
+    const std::vector<double> &zf = fine.z();
+    if (zc.size() < 2 || zf.size() < zc.size())
+      return false;
+    const double tolerance = 1e-9 * std::max(zf.back(), zc.back());
+    unsigned int i         = 0;
+    for (const double z : zc)
+      {
+        while (i < zf.size() && zf[i] < z - tolerance)
+          ++i;
+        if (i == zf.size() || std::abs(zf[i] - z) > tolerance)
+          return false;
+      }
+    return true;
+  }
+
+
+
   Vector<double>
   CoarseInterfaceModel::prolongate(const Vector<double> &coarse_force) const
   {

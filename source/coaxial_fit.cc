@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace coaxfit
@@ -215,7 +216,11 @@ namespace coaxfit
       parameters.contact.active_set_tolerance);
     if (wants_coarse_model())
       {
-        TimerOutput::Scope                    scope(timer, "coarse_case");
+        // Timed on its own for the main solve only: the analysis of
+        // operation times its solvers as a whole.
+        std::optional<TimerOutput::Scope> scope;
+        if (start_from_coarse)
+          scope.emplace(timer, "coarse_case");
         std::unique_ptr<CoarseInterfaceModel> model
           = make_coarse_model(contact);
         if (model)
@@ -303,7 +308,12 @@ namespace coaxfit
           = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
         coarse_twin->setup_system();
       }
-    if (coarse_twin->interface->n_points() > max_condensed_points)
+    // The prior is dense on the fine interface (n^2 numbers, O(n^2) per
+    // step), and the coarse points must be fine points (not so for FE_Q(3)
+    // and higher, whose refined support points do not nest).
+    if (coarse_twin->interface->n_points() > max_condensed_points
+        || contact.n_points() > max_condensed_points
+        || !CoarseInterfaceModel::nested(*coarse_twin->interface, contact))
       return nullptr;
     coarse_twin->condense();
     return std::make_unique<CoarseInterfaceModel>(*coarse_twin->condensed_shaft,

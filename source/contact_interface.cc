@@ -65,16 +65,19 @@ namespace coaxfit
 
 
   double
-  ContactInterface::relative_gap_residual(
-    const Vector<double>    &u1,
-    const Vector<double>    &u2,
-    const std::vector<bool> &contact) const
+  ContactInterface::relative_gap_residual(const Vector<double>    &u1,
+                                          const Vector<double>    &u2,
+                                          const std::vector<bool> &contact,
+                                          const bool with_penetration) const
   {
     double mismatch = 0.;
     for (unsigned int i = 0; i < u1.size(); ++i)
       {
         const double g = u2[i] - u1[i] - d_load[i];
-        mismatch       = std::max(mismatch, contact[i] ? std::abs(g) : -g);
+        if (contact[i])
+          mismatch = std::max(mismatch, std::abs(g));
+        else if (with_penetration)
+          mismatch = std::max(mismatch, -g);
       }
     const double r = mismatch / scale;
     return std::isfinite(r) ? r : std::numeric_limits<double>::quiet_NaN();

@@ -105,10 +105,14 @@ namespace coaxfit
   {
     // The paper updates the flags after every Neumann step; the outer
     // (primal-dual) mode once the iteration has converged for the current
-    // set to the active-set tolerance.
+    // set to the active-set tolerance. That residual leaves out the
+    // penetration of separated points: the problem with these flags cannot
+    // reduce it, only the update can (with flags predicted by a coarser
+    // mesh a penetrating point would otherwise wait for ever).
     active_set_verified = false;
     if (active_set.update_mode() == UnilateralActiveSet::Update::every_step
-        || (interface.relative_gap_residual(u1, u2, active_set.in_contact())
+        || (interface.relative_gap_residual(
+              u1, u2, active_set.in_contact(), false)
               < active_set_tolerance
             && last_traction_mismatch < active_set_tolerance))
       {
@@ -217,7 +221,7 @@ namespace coaxfit
     active_set.assume(contact);
     // Predicted flags are better than an update from a rough state.
     if (automatic_active_set_tolerance)
-      initial_active_set_tolerance = std::max(1e-3, tolerance_floor);
+      initial_active_set_tolerance = std::max(1e-2, tolerance_floor);
   }
 
 

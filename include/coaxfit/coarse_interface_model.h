@@ -76,6 +76,10 @@ namespace coaxfit
     std::vector<bool>
     prolongate(const std::vector<bool> &coarse_contact) const;
 
+    /** Whether every point of @p coarse is a point of @p fine. */
+    static bool
+    nested(const ContactInterface &coarse, const ContactInterface &fine);
+
     /** Number of coarse interface points. */
     unsigned int
     n_coarse_points() const

@@ -111,13 +111,16 @@ namespace coaxfit
     /**
      * Relative displacement residual max_i r_i / displacement_scale():
      * r_i = |g_i| at points in
-     * @p contact, the penetration -g_i at separated points (they may open).
+     * @p contact, the penetration -g_i at separated points (they may open;
+     * left out if not @p with_penetration: the residual of the problem
+     * with these flags, which an update of the flags cannot wait for).
      * NaN if not finite.
      */
     double
     relative_gap_residual(const Vector<double>    &u1,
                           const Vector<double>    &u2,
-                          const std::vector<bool> &contact) const;
+                          const std::vector<bool> &contact,
+                          bool with_penetration = true) const;
 
     /** Nodal (lumped) pressure F_i / w_i (MPa). */
     Vector<double>

@@ -263,7 +263,7 @@ namespace coaxfit
   {
     bool                unilateral        = true;
     ActiveSetUpdateType active_set_update = ActiveSetUpdateType::automatic;
-    /** 0: auto (1e-3 from a coarse start, 0.1 otherwise). */
+    /** 0: auto (1e-2 from a coarse start, 0.1 otherwise). */
     double active_set_tolerance = 0.;
 
     void

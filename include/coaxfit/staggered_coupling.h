@@ -179,7 +179,7 @@ namespace coaxfit
      */
     double active_set_tolerance;
     double initial_active_set_tolerance;
-    /** Contact/Active set tolerance = auto: 0.1, 1e-3 from a coarse start. */
+    /** Contact/Active set tolerance = auto: 0.1, 1e-2 from a coarse start. */
     const bool   automatic_active_set_tolerance;
     const double tolerance_floor;
     /** Every set of flags the iteration has had. */

@@ -12,7 +12,9 @@
 // 3. Runs with the defaults against the monolithic solver (the same
 //    discrete problem solved at once): pressures equal to 1e-8, with the
 //    coarse model and without it, for a solid shaft (variant 5), thin hubs
-//    (variants 10, 13), a separating thin tube (variant 17) and a hub 1e4
+//    (variants 10, 13), a separating thin tube (variant 17, also on a
+//    uniform mesh, where the predicted flags leave a point penetrating),
+//    FE_Q(3) (no coarse model: its points do not nest) and a hub 1e4
 //    times softer than the shaft; steps and active-set changes printed.
 
 #include <coaxfit/coarse_interface_model.h>
@@ -193,6 +195,15 @@ main()
   v17.mesh.global_refinements = 1;
   v17.contact.unilateral      = true;
   check_run("variant 17 (separates)", v17);
+  // Predicted flags that leave a separated point penetrating: the flags
+  // must still be updated (this stalled with exit 2 once).
+  Parameters uniform         = v17;
+  uniform.mesh.grading_ratio = 1.;
+  check_run("variant 17, uniform mesh", uniform);
+  // FE_Q(3): the coarse points do not nest, the model is left out.
+  Parameters cubic  = v5;
+  cubic.mesh.degree = 3;
+  check_run("variant 5, FE_Q(3)", cubic);
   Parameters soft = v5;
   soft.hub.E      = 20.;
   check_run("hub E = 20 MPa", soft);

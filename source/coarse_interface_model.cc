@@ -18,25 +18,12 @@ namespace coaxfit
     , fine_weights(fine.weights())
     , short_wave_ratio(short_wave_ratio)
   {
+    coarse_index = fine_points_at(coarse, fine);
+    AssertThrow(!coarse_index.empty(),
+                ExcMessage("every point of the coarse interface (at least "
+                           "two) must be a point of the fine one"));
     const std::vector<double> &zc = coarse.z();
-    const std::vector<double> &zf = fine.z();
-    AssertThrow(zc.size() >= 2 && zf.size() >= zc.size(),
-                ExcMessage("the coarse interface must have at least two "
-                           "points and no more than the fine one"));
-    const double length    = std::max(zf.back(), zc.back());
-    const double tolerance = 1e-9 * length;
-    // Both lists increase from z = 0.
-    unsigned int i = 0;
-    for (const double z : zc)
-      {
-        while (i < zf.size() && zf[i] < z - tolerance)
-          ++i;
-        AssertThrow(i < zf.size() && std::abs(zf[i] - z) <= tolerance,
-                    ExcMessage("a point of the coarse interface is not a "
-                               "point of the fine one"));
-        coarse_index.push_back(i);
-      }
-    for (const double z : zf)
+    for (const double z : fine.z())
       {
         const auto         upper = std::upper_bound(zc.begin(), zc.end(), z);
         const unsigned int l
@@ -50,24 +37,36 @@ namespace coaxfit
 
 
 
-  bool
-  CoarseInterfaceModel::nested(const ContactInterface &coarse,
-                               const ContactInterface &fine)
+  std::vector<unsigned int>
+  CoarseInterfaceModel::fine_points_at(const ContactInterface &coarse,
+                                       const ContactInterface &fine)
   {
     const std::vector<double> &zc = coarse.z();
     const std::vector<double> &zf = fine.z();
     if (zc.size() < 2 || zf.size() < zc.size())
-      return false;
+      return {};
     const double tolerance = 1e-9 * std::max(zf.back(), zc.back());
-    unsigned int i         = 0;
+    // Both lists increase from z = 0.
+    std::vector<unsigned int> index;
+    unsigned int              i = 0;
     for (const double z : zc)
       {
         while (i < zf.size() && zf[i] < z - tolerance)
           ++i;
         if (i == zf.size() || std::abs(zf[i] - z) > tolerance)
-          return false;
+          return {};
+        index.push_back(i);
       }
-    return true;
+    return index;
+  }
+
+
+
+  bool
+  CoarseInterfaceModel::nested(const ContactInterface &coarse,
+                               const ContactInterface &fine)
+  {
+    return !fine_points_at(coarse, fine).empty();
   }
 
 

@@ -302,12 +302,7 @@ namespace coaxfit
   std::unique_ptr<CoarseInterfaceModel>
   CoaxialFit::make_coarse_model(const ContactInterface &contact)
   {
-    if (!coarse_twin)
-      {
-        coarse_twin
-          = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
-        coarse_twin->setup_system();
-      }
+    set_up_coarse_twin();
     // The prior is dense on the fine interface (n^2 numbers, O(n^2) per
     // step), and the coarse points must be fine points (not so for FE_Q(3)
     // and higher, whose refined support points do not nest).
@@ -680,14 +675,24 @@ namespace coaxfit
 
 
   void
+  CoaxialFit::set_up_coarse_twin()
+  {
+    if (coarse_twin)
+      return;
+    coarse_twin
+      = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
+    coarse_twin->setup_system();
+  }
+
+
+
+  void
   CoaxialFit::prepare_corner_trend()
   {
     if (coarse_twin || !(parameters.design.corner_trend || wants_coarse_model())
         || parameters.mesh.global_refinements == 0)
       return;
-    coarse_twin
-      = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
-    coarse_twin->setup_system();
+    set_up_coarse_twin();
     if (wants_coarse_model()
         && coarse_twin->interface->n_points() <= max_condensed_points)
       coarse_twin->condense();

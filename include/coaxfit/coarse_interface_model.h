@@ -88,6 +88,14 @@ namespace coaxfit
     }
 
   private:
+    /**
+     * The fine point at each point of @p coarse (both at least two
+     * points); empty if some coarse point is not a point of @p fine.
+     */
+    static std::vector<unsigned int>
+    fine_points_at(const ContactInterface &coarse,
+                   const ContactInterface &fine);
+
     /** Column j of E: the coarse map's answer to a unit force at j. */
     void
     map_column(unsigned int               j,

@@ -235,6 +235,9 @@ namespace coaxfit
      */
     std::unique_ptr<CoarseInterfaceModel>
     make_coarse_model(const ContactInterface &contact);
+    /** Set up coarse_twin (this case one refinement coarser) if not yet. */
+    void
+    set_up_coarse_twin();
     /** This case one refinement coarser, without its own corner trend. */
     Parameters
     coarser_parameters() const;

@@ -24,6 +24,19 @@ namespace coaxfit
 
 
 
+  bool
+  UnilateralActiveSet::set(const std::vector<bool> &flags)
+  {
+    AssertDimension(flags.size(), contact.size());
+    if (!is_enabled || flags == contact)
+      return false;
+    contact = flags;
+    ++changes;
+    return true;
+  }
+
+
+
   unsigned int
   UnilateralActiveSet::clamp(Vector<double> &force) const
   {

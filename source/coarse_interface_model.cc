@@ -4,19 +4,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace coaxfit
 {
-  CoarseInterfaceModel::CoarseInterfaceModel(InterfaceOperator &coarse_shaft,
-                                             InterfaceOperator &coarse_hub,
-                                             const ContactInterface &coarse,
-                                             const ContactInterface &fine,
-                                             const double short_wave_ratio)
+  CoarseInterfaceModel::CoarseInterfaceModel(
+    InterfaceOperator                        &coarse_shaft,
+    InterfaceOperator                        &coarse_hub,
+    const ContactInterface                   &coarse,
+    const ContactInterface                   &fine,
+    const std::array<ShortWaveCompliance, 2> &short_waves,
+    const unsigned int                        degree)
     : coarse_shaft(coarse_shaft)
     , coarse_hub(coarse_hub)
     , coarse_weights(coarse.weights())
     , fine_weights(fine.weights())
-    , short_wave_ratio(short_wave_ratio)
   {
     coarse_index = fine_points_at(coarse, fine);
     AssertThrow(!coarse_index.empty(),
@@ -32,6 +34,40 @@ namespace coaxfit
         const double t = std::clamp((z - zc[l]) / (zc[l + 1] - zc[l]), 0., 1.);
         left.push_back(l);
         interpolation.push_back({{1. - t, t}});
+      }
+    // The transfer of pressures: the coarse elements' own interpolation,
+    // quadratic on each pair of coarse intervals (vertex, midpoint, vertex)
+    // for FE_Q(2), linear otherwise. With it the coarse weights are the
+    // restricted fine ones (w_c = P^T w_f, the shape functions nest), so
+    // the restriction below conserves force.
+    for (unsigned int i = 0; i < fine.z().size(); ++i)
+      {
+        const double z = fine.z()[i];
+        if (degree == 2 && zc.size() % 2 == 1)
+          {
+            const long cell
+              = std::upper_bound(zc.begin(), zc.end(), z) - zc.begin() - 1;
+            const unsigned int m
+              = std::min<unsigned int>(2 * (std::max<long>(cell, 0) / 2),
+                                       zc.size() - 3);
+            const double xi = (z - zc[m]) / (zc[m + 2] - zc[m]);
+            transfer.push_back({{m, 2. * (xi - 0.5) * (xi - 1.)},
+                                {m + 1, 4. * xi * (1. - xi)},
+                                {m + 2, 2. * xi * (xi - 0.5)}});
+          }
+        else
+          transfer.push_back({{left[i], interpolation[i][0]},
+                              {left[i] + 1, interpolation[i][1]}});
+      }
+    const std::vector<double> &zf = fine.z();
+    for (unsigned int i = 0; i < zf.size(); ++i)
+      {
+        const double h = (zf[std::min<unsigned int>(i + 1, zf.size() - 1)]
+                          - zf[i > 0 ? i - 1 : 0])
+                         / ((i > 0 && i + 1 < zf.size()) ? 2. : 1.);
+        for (unsigned int b = 0; b < 2; ++b)
+          short_wave[b].push_back(
+            short_waves[b](numbers::PI / (h * numbers::SQRT2)));
       }
   }
 
@@ -77,11 +113,8 @@ namespace coaxfit
     AssertDimension(coarse_force.size(), coarse_weights.size());
     Vector<double> force(fine_weights.size());
     for (unsigned int i = 0; i < force.size(); ++i)
-      force[i] = fine_weights[i]
-                 * (interpolation[i][0] * coarse_force[left[i]]
-                      / coarse_weights[left[i]]
-                    + interpolation[i][1] * coarse_force[left[i] + 1]
-                        / coarse_weights[left[i] + 1]);
+      for (const auto &[a, p] : transfer[i])
+        force[i] += fine_weights[i] * p * coarse_force[a] / coarse_weights[a];
     return force;
   }
 
@@ -158,22 +191,10 @@ namespace coaxfit
     // restriction (Q P = I, so that W_f P Q W_f^-1 is a projection onto
     // what the coarse mesh represents). With B^ = W_c^-1 B W_c,
     // J = W_f P B^ Q W_f^-1 + (Omega - I)(I - W_f P Q W_f^-1).
-    const Vector<double>    &wf = fine_weights;
-    const Vector<double>    &wc = coarse_weights;
-    LAPACKFullMatrix<double> mass(nc, nc);
-    for (unsigned int i = 0; i < nf; ++i)
-      for (unsigned int a = 0; a < 2; ++a)
-        for (unsigned int b = 0; b < 2; ++b)
-          mass(left[i] + a, left[i] + b)
-            += interpolation[i][a] * wf[i] * interpolation[i][b];
-    mass.invert();
-    // Q W_f^-1 (nc x nf): the restriction of forces to coarse pressures.
-    LAPACKFullMatrix<double> restriction(nc, nf);
-    for (unsigned int a = 0; a < nc; ++a)
-      for (unsigned int k = 0; k < nf; ++k)
-        restriction(a, k) = mass(a, left[k]) * interpolation[k][0]
-                            + mass(a, left[k] + 1) * interpolation[k][1];
-    LAPACKFullMatrix<double> scaled(nc, nc), T(nc, nf);
+    const Vector<double>          &wf          = fine_weights;
+    const Vector<double>          &wc          = coarse_weights;
+    const LAPACKFullMatrix<double> restriction = force_restriction();
+    LAPACKFullMatrix<double>       scaled(nc, nc), T(nc, nf);
     for (unsigned int a = 0; a < nc; ++a)
       for (unsigned int b = 0; b < nc; ++b)
         scaled(a, b) = M(a, b) * wc[b] / wc[a];
@@ -183,15 +204,12 @@ namespace coaxfit
     // lambda of the compliances; the double step multiplies their error by
     // N = -(alpha sqrt(lambda) - (1 - alpha) / sqrt(lambda))^2 (4.17), so
     // the exact step there is 1 / (1 - N).
-    const double        root = std::sqrt(short_wave_ratio);
     std::vector<double> J(nf * nf);
     for (unsigned int i = 0; i < nf; ++i)
       {
+        const double root  = std::sqrt(short_wave[0][i] / short_wave[1][i]);
         const double s     = fine_alpha[i] * root - (1. - fine_alpha[i]) / root;
         const double omega = fine_contact[i] ? 1. / (1. + s * s) : 1.;
-        const unsigned int l  = left[i];
-        const double       c0 = wf[i] * interpolation[i][0];
-        const double       c1 = wf[i] * interpolation[i][1];
         // Separated points are traction free whatever the force: the plain
         // step is exact there and their residuals say nothing about the
         // others.
@@ -200,13 +218,107 @@ namespace coaxfit
         for (unsigned int k = 0; k < nf; ++k)
           if (fine_contact[k])
             {
-              const double projection
-                = c0 * restriction(l, k) + c1 * restriction(l + 1, k);
+              double projection = 0., coarse = 0.;
+              for (const auto &[a, p] : transfer[i])
+                {
+                  projection += wf[i] * p * restriction(a, k);
+                  coarse += wf[i] * p * T(a, k);
+                }
               J[i * nf + k]
-                = c0 * T(l, k) + c1 * T(l + 1, k)
-                  + (omega - 1.) * ((i == k ? 1. : 0.) - projection);
+                = coarse + (omega - 1.) * ((i == k ? 1. : 0.) - projection);
             }
       }
     return J;
+  }
+
+
+
+  LAPACKFullMatrix<double>
+  CoarseInterfaceModel::force_restriction() const
+  {
+    const unsigned int       nc = coarse_index.size();
+    const unsigned int       nf = fine_weights.size();
+    LAPACKFullMatrix<double> mass(nc, nc);
+    for (unsigned int i = 0; i < nf; ++i)
+      for (const auto &[a, pa] : transfer[i])
+        for (const auto &[b, pb] : transfer[i])
+          mass(a, b) += pa * fine_weights[i] * pb;
+    mass.invert();
+    LAPACKFullMatrix<double> restriction(nc, nf);
+    for (unsigned int a = 0; a < nc; ++a)
+      for (unsigned int k = 0; k < nf; ++k)
+        for (const auto &[b, pb] : transfer[k])
+          restriction(a, k) += mass(a, b) * pb;
+    return restriction;
+  }
+
+
+
+  std::vector<double>
+  CoarseInterfaceModel::compliance_prior(const unsigned int body)
+  {
+    const unsigned int nc = coarse_index.size();
+    const unsigned int nf = fine_weights.size();
+    InterfaceOperator &op = body == 0 ? coarse_shaft : coarse_hub;
+    // The coarse compliance C_c, column by column.
+    LAPACKFullMatrix<double> Cc(nc, nc);
+    Vector<double>           unit(nc), u(nc);
+    for (unsigned int j = 0; j < nc; ++j)
+      {
+        unit    = 0.;
+        unit[j] = 1.;
+        op.solve_neumann(unit, u);
+        for (unsigned int i = 0; i < nc; ++i)
+          Cc(i, j) = u[i];
+      }
+    // The shaft moves inwards under compression: its compliance and the
+    // short-wave term below are negative.
+    const double sign = Cc(0, 0) < 0. ? -1. : 1.;
+
+    // C = P C_c P^T + S (W_f^-1 - P M^-1 P^T) S, M = P^T W_f P,
+    // S = diag(sqrt(c_i)) (symmetric, as the fine compliance is).
+    // - P C_c P^T is the coarse body's answer to the coarse nodal forces
+    //   P^T F (consistent: P is the elements' interpolation, so P^T conserves
+    //   force and gives a uniform pressure's coarse forces exactly),
+    //   interpolated: the Galerkin (Ritz) approximation.
+    // - W_f^-1 - P M^-1 P^T = W_f^-1/2 (I - projection) W_f^-1/2 takes from
+    //   the pressure F / w what the coarse mesh represents; the rest, the
+    //   short waves, gets the compliance c_i = c(k) of ShortWaveCompliance.
+    const LAPACKFullMatrix<double> restriction = force_restriction();
+    LAPACKFullMatrix<double>       G(nc, nf); // C_c P^T
+    for (unsigned int a = 0; a < nc; ++a)
+      for (unsigned int k = 0; k < nf; ++k)
+        for (const auto &[b, pb] : transfer[k])
+          G(a, k) += Cc(a, b) * pb;
+    std::vector<double> C(nf * nf);
+    for (unsigned int i = 0; i < nf; ++i)
+      for (unsigned int k = 0; k < nf; ++k)
+        {
+          double projection = 0., coarse = 0.;
+          for (const auto &[a, p] : transfer[i])
+            {
+              projection += p * restriction(a, k);
+              coarse += p * G(a, k);
+            }
+          C[i * nf + k]
+            = coarse
+              + sign * std::sqrt(short_wave[body][i] * short_wave[body][k])
+                  * ((i == k ? 1. / fine_weights[i] : 0.) - projection);
+        }
+    return C;
+  }
+
+
+
+  double
+  ShortWaveCompliance::operator()(const double k) const
+  {
+    const double half_space = 2. * (1. - nu * nu) / (E * k);
+    if (!(wall > 0.))
+      return half_space;
+    const double D = E * wall * wall * wall / (12. * (1. - nu * nu));
+    const double shell
+      = 1. / (D * k * k * k * k + E * wall / (radius * radius));
+    return std::max(half_space, shell);
   }
 } // namespace coaxfit

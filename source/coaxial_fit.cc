@@ -205,30 +205,30 @@ namespace coaxfit
         shaft_operator = condensed_shaft.get();
         hub_operator   = condensed_hub.get();
       }
-    auto staggered = std::make_unique<StaggeredCoupling>(
+    // Timed on its own for the main solve only: the analysis of operation
+    // times its solvers as a whole.
+    std::optional<TimerOutput::Scope> scope;
+    if (start_from_coarse && wants_coarse_model())
+      scope.emplace(timer, "coarse_case");
+    std::unique_ptr<CoarseInterfaceModel> model
+      = wants_coarse_model() ? make_coarse_model(contact) : nullptr;
+    // The auto controller: ibqn with a coarse model, iqn-ils without.
+    CouplingParameters coupling = parameters.coupling;
+    coupling.acceleration       = coupling.accelerator(model != nullptr);
+    auto staggered              = std::make_unique<StaggeredCoupling>(
       *shaft_solver,
       *hub_solver,
       *shaft_operator,
       *hub_operator,
       contact,
-      parameters.coupling,
+      coupling,
       UnilateralActiveSet(contact.n_points(), unilateral, active_set_mode()),
       parameters.contact.active_set_tolerance);
-    if (wants_coarse_model())
+    if (model)
       {
-        // Timed on its own for the main solve only: the analysis of
-        // operation times its solvers as a whole.
-        std::optional<TimerOutput::Scope> scope;
         if (start_from_coarse)
-          scope.emplace(timer, "coarse_case");
-        std::unique_ptr<CoarseInterfaceModel> model
-          = make_coarse_model(contact);
-        if (model)
-          {
-            if (start_from_coarse)
-              start_from_coarse_solution(*staggered, *model);
-            staggered->use_coarse_model(std::move(model));
-          }
+          start_from_coarse_solution(*staggered, *model);
+        staggered->use_coarse_model(std::move(model));
       }
     return staggered;
   }
@@ -253,12 +253,15 @@ namespace coaxfit
 
 
 
-  double
-  CoaxialFit::short_wave_ratio() const
+  std::array<ShortWaveCompliance, 2>
+  CoaxialFit::short_wave_compliances() const
   {
-    const Material &s = parameters.shaft;
-    const Material &h = parameters.hub;
-    return h.E * (1. - s.nu * s.nu) / (s.E * (1. - h.nu * h.nu));
+    const GeometryParameters &g = parameters.geometry;
+    return {{{parameters.shaft.E,
+              parameters.shaft.nu,
+              g.R1,
+              g.R0 > 0. ? g.R1 - g.R0 : 0.},
+             {parameters.hub.E, parameters.hub.nu, g.R1, g.R2 - g.R1}}};
   }
 
 
@@ -292,7 +295,8 @@ namespace coaxfit
   CoaxialFit::wants_coarse_model() const
   {
     return parameters.coupling.coarse_model
-           && parameters.coupling.accelerator() == AcceleratorType::iqn_ils
+           && (parameters.coupling.accelerator() == AcceleratorType::iqn_ils
+               || parameters.coupling.accelerator() == AcceleratorType::ibqn)
            && parameters.solver.method != SolverMethod::monolithic
            && parameters.mesh.global_refinements > 0 && !amg_solver;
   }
@@ -315,7 +319,8 @@ namespace coaxfit
                                                   *coarse_twin->condensed_hub,
                                                   *coarse_twin->interface,
                                                   contact,
-                                                  short_wave_ratio());
+                                                  short_wave_compliances(),
+                                                  parameters.mesh.degree);
   }
 
 

@@ -36,7 +36,9 @@ namespace coaxfit
         {"winkler", AlphaControllerPreset::winkler},
         {"pointwise", AlphaControllerPreset::pointwise},
         {"aitken", AlphaControllerPreset::aitken},
-        {"iqn-ils", AlphaControllerPreset::iqn_ils}};
+        {"iqn-ils", AlphaControllerPreset::iqn_ils},
+        {"ibqn", AlphaControllerPreset::ibqn},
+        {"auto", AlphaControllerPreset::automatic}};
       return n;
     }
 
@@ -58,7 +60,8 @@ namespace coaxfit
         {"auto", AcceleratorType::automatic},
         {"none", AcceleratorType::none},
         {"aitken", AcceleratorType::aitken},
-        {"iqn-ils", AcceleratorType::iqn_ils}};
+        {"iqn-ils", AcceleratorType::iqn_ils},
+        {"ibqn", AcceleratorType::ibqn}};
       return n;
     }
 
@@ -502,7 +505,8 @@ namespace coaxfit
                       "u1), with index 1 the shaft and 2 the hub. A stiff "
                       "solid shaft wants alpha near 1, a thin tube near 0. "
                       "The fixed rule uses it throughout, from the "
-                      "paper's zero force. The adaptive rules (winkler, "
+                      "paper's zero force; ibqn does not use it. The "
+                      "adaptive rules (winkler, "
                       "pointwise, and so aitken and iqn-ils) do not use "
                       "it: their first Neumann step applies a uniform "
                       "pressure (scaled afterwards to the one that closes "
@@ -525,7 +529,18 @@ namespace coaxfit
                   "with Coupling/Beta. aitken: the Winkler alpha plus "
                   "dynamic (Aitken) relaxation of the traction iterate. "
                   "iqn-ils: the Winkler alpha plus interface "
-                  "quasi-Newton (inverse least squares) acceleration.");
+                  "quasi-Newton (inverse least squares) acceleration. "
+                  "ibqn: interface block quasi-Newton, no alpha: each "
+                  "body's interface compliance is modelled from every "
+                  "solve of that body (Neumann and Dirichlet, whatever "
+                  "the contact zone was), starting from the coarse "
+                  "model's compliance; the next Neumann force and "
+                  "Dirichlet displacement solve the contact problem of "
+                  "these models (contact flags included), so a change "
+                  "of the contact zone costs no history. auto: ibqn "
+                  "where Coupling/Coarse model applies (Mesh/Global "
+                  "refinements >= 1, direct linear solver), iqn-ils "
+                  "elsewhere. Measured: benchmarks/README.md.");
     add_selection(prm,
                   "Alpha rule",
                   rule,
@@ -541,9 +556,11 @@ namespace coaxfit
                   "Acceleration of the traction fixed point x -> G(x) "
                   "(one Neumann and one Dirichlet step): none, aitken "
                   "(dynamic relaxation) or iqn-ils (interface "
-                  "quasi-Newton). auto: the accelerator of the Alpha "
-                  "controller preset (none for fixed, winkler and "
-                  "pointwise).");
+                  "quasi-Newton); or ibqn, which replaces the fixed "
+                  "point by models of the two bodies (see Alpha "
+                  "controller; alpha is then not used). auto: the "
+                  "accelerator of the Alpha controller preset (none for "
+                  "fixed, winkler and pointwise).");
     declare_iteration_parameters(prm);
     prm.leave_subsection();
   }
@@ -588,7 +605,10 @@ namespace coaxfit
       "Coarse model",
       "auto",
       Patterns::Selection("auto|none"),
-      "Prior of the quasi-Newton model (iqn-ils): the inverse Jacobian of "
+      "Prior of the quasi-Newton model. For ibqn: each body's compliance on "
+      "the coarse mesh (its answer to the coarse nodal forces of the fine "
+      "ones, interpolated), plus a half-space or shell compliance for the "
+      "waves that mesh cannot represent; for iqn-ils: the inverse Jacobian of "
       "the process on the same case meshed one refinement coarser, formed "
       "with that mesh's condensed interface operators for the run's alpha "
       "and contact points (again after every change of the contact "
@@ -597,7 +617,10 @@ namespace coaxfit
       "the coarse mesh cannot represent (multi-level acceleration). auto: "
       "used when there is such a mesh (Mesh/Global refinements >= 1), the "
       "linear solver is direct and the coarse interface has at most 2000 "
-      "points; none: plain IQN-ILS. Measured: benchmarks/README.md.");
+      "points (2000 fine points for ibqn's dense models); the run also "
+      "starts from the coarse case's solution. none: plain IQN-ILS (and "
+      "ibqn with Winkler compliances measured in its first step). "
+      "Measured: benchmarks/README.md.");
     prm.add_action("Coarse model", [this](const std::string &value) {
       coarse_model = value == "auto";
     });
@@ -620,14 +643,15 @@ namespace coaxfit
     prm.add_parameter("IQN-ILS columns",
                       iqn_columns,
                       "Largest number of previous iterations the IQN-ILS "
-                      "model keeps. Allowed: 1 to 1000.",
+                      "model keeps; for ibqn, the largest number of "
+                      "solves kept per body. Allowed: 1 to 1000.",
                       Patterns::Integer(1, 1000));
     prm.add_parameter("IQN-ILS filter",
                       iqn_filter,
-                      "QR filter of IQN-ILS: a column whose part "
-                      "orthogonal to the newer columns is below this "
-                      "fraction of its norm is dropped. Allowed: 0 <= "
-                      "filter < 1.",
+                      "QR filter of IQN-ILS (and of ibqn's samples): a "
+                      "column whose part orthogonal to the newer columns "
+                      "is below this fraction of its norm is dropped. "
+                      "Allowed: 0 <= filter < 1.",
                       Patterns::Double(0., 1.));
     prm.add_parameter("Tolerance",
                       tolerance,
@@ -691,12 +715,17 @@ namespace coaxfit
 
 
   AcceleratorType
-  CouplingParameters::accelerator() const
+  CouplingParameters::accelerator(const bool coarse_model_available) const
   {
     if (acceleration != AcceleratorType::automatic)
       return acceleration;
     switch (controller)
       {
+        case AlphaControllerPreset::ibqn:
+          return AcceleratorType::ibqn;
+        case AlphaControllerPreset::automatic:
+          return coarse_model_available ? AcceleratorType::ibqn :
+                                          AcceleratorType::iqn_ils;
         case AlphaControllerPreset::aitken:
           return AcceleratorType::aitken;
         case AlphaControllerPreset::iqn_ils:

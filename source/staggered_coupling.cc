@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -61,7 +63,13 @@ namespace coaxfit
     , automatic_active_set_tolerance(active_set_tolerance == 0.)
     , tolerance_floor(parameters.tolerance)
     , history_on_change(parameters.history_on_change)
-  {}
+  {
+    if (parameters.accelerator() == AcceleratorType::ibqn)
+      block_model
+        = std::make_unique<InterfaceBlockModel>(interface.n_points(),
+                                                parameters.iqn_columns,
+                                                parameters.iqn_filter);
+  }
 
 
 
@@ -71,8 +79,33 @@ namespace coaxfit
     force = next_force;
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
+    // The model takes the solves as they are: a scaled first step is exact
+    // only without body loads (temperature, speed).
+    if (block_model)
+      add_block_model_samples(force, force);
     if (history_rows.empty() && start_loaded && initial_force.size() == 0)
       scale_first_load();
+    if (block_model)
+      {
+        // The flags that made this force are judged by the state below;
+        // the model's prediction from it sets those of the next steps.
+        const std::vector<bool> made_with = active_set.in_contact();
+        last_displacement_mismatch
+          = interface.relative_gap_residual(u1, u2, made_with);
+        active_set_verified = predict_from_block_model();
+        neumann_force       = force;
+        neumann_u1          = u1;
+        neumann_u2          = u2;
+        history_rows.push_back(
+          {static_cast<unsigned int>(history_rows.size() + 1),
+           true,
+           std::numeric_limits<double>::quiet_NaN(),
+           last_displacement_mismatch,
+           0.,
+           static_cast<unsigned int>(
+             std::count(made_with.begin(), made_with.end(), false))});
+        return;
+      }
     update_active_set();
     last_displacement_mismatch
       = interface.relative_gap_residual(u1, u2, active_set.in_contact());
@@ -150,9 +183,78 @@ namespace coaxfit
 
 
   void
+  StaggeredCoupling::add_block_model_samples(const Vector<double> &f_shaft,
+                                             const Vector<double> &f_hub)
+  {
+    block_model->add_sample(InterfaceBlockModel::shaft, f_shaft, u1);
+    block_model->add_sample(InterfaceBlockModel::hub, f_hub, u2);
+    if (!block_model->has_prior())
+      {
+        // No coarse model: Winkler compliances measured in this first step.
+        const Vector<double> &w = interface.weights();
+        block_model->set_winkler_prior(InterfaceBlockModel::shaft,
+                                       -winkler_compliance(u1, f_shaft, w),
+                                       w);
+        block_model->set_winkler_prior(InterfaceBlockModel::hub,
+                                       winkler_compliance(u2, f_hub, w),
+                                       w);
+      }
+  }
+
+
+
+  bool
+  StaggeredCoupling::predict_from_block_model()
+  {
+    const unsigned int  n = force.size();
+    std::vector<double> d(n);
+    for (unsigned int i = 0; i < n; ++i)
+      d[i] = interface.interference(i);
+    std::vector<bool> contact = active_set.in_contact();
+    const bool        settled = block_model->predict(
+      d, active_set.enabled(), contact, next_force, model_displacement);
+    return active_set.set(contact) == false && settled;
+  }
+
+
+
+  void
   StaggeredCoupling::dirichlet_step()
   {
-    const unsigned int       n       = force.size();
+    const unsigned int n = force.size();
+    if (block_model)
+      {
+        // The model's common interface displacement on the contact points,
+        // separated points traction free.
+        const std::vector<bool> contact = active_set.in_contact();
+        Vector<double> u_shaft(model_displacement), u_hub(n), zero(n), f1, f2;
+        for (unsigned int i = 0; i < n; ++i)
+          u_hub[i] = u_shaft[i] + interface.interference(i);
+        concurrently([&]() { shaft.solve(contact, u_shaft, zero, u1, f1); },
+                     [&]() { hub.solve(contact, u_hub, zero, u2, f2); });
+        const double mismatch = interface.max_pressure_difference(f1, f2);
+        const double magnitude
+          = std::max(interface.max_pressure(f1), interface.max_pressure(f2));
+        last_traction_mismatch = magnitude > 0. ? mismatch / magnitude : 0.;
+        if (!std::isfinite(last_traction_mismatch))
+          last_traction_mismatch = std::numeric_limits<double>::quiet_NaN();
+        const unsigned int n_separated = active_set.n_separated();
+        force                          = f1;
+        force.add(0.5, f2);
+        force.add(-0.5, f1);
+        // Flags changed by this prediction were not those of the state.
+        add_block_model_samples(f1, f2);
+        if (!predict_from_block_model())
+          active_set_verified = false;
+        history_rows.push_back(
+          {static_cast<unsigned int>(history_rows.size() + 1),
+           false,
+           std::numeric_limits<double>::quiet_NaN(),
+           interface.relative_gap_residual(u1, u2, contact),
+           last_traction_mismatch,
+           n_separated});
+        return;
+      }
     const std::vector<bool> &contact = active_set.in_contact();
     Vector<double>           u_shaft(n), u_hub(n), zero(n), f1, f2;
     for (unsigned int i = 0; i < n; ++i)
@@ -459,15 +561,19 @@ namespace coaxfit
             << " or use fewer Mesh/Radial cells.";
         throw SolverError(msg.str());
       }
-    msg << "the coupling iteration failed at step " << last.step
-        << " with Coupling/Alpha rule = " << rule->name()
-        << " and Accelerator = " << accelerator->name()
-        << ", alpha = " << std::setprecision(4) << rule->representative_alpha()
-        << ": " << reason << "; ";
+    msg << "the coupling iteration failed at step " << last.step << " with ";
+    if (block_model)
+      msg << "Accelerator = ibqn";
+    else
+      msg << "Coupling/Alpha rule = " << rule->name()
+          << " and Accelerator = " << accelerator->name()
+          << ", alpha = " << std::setprecision(4)
+          << rule->representative_alpha();
+    msg << ": " << reason << "; ";
     // Advice that fits what ran: a constant alpha can be changed or
     // accelerated; an accelerated run that fails has the monolithic solver
     // left (the same discrete problem, solved at once).
-    if (accelerator->name() == "iqn-ils")
+    if (block_model || accelerator->name() == "iqn-ils")
       msg << "the quasi-Newton iteration could not recover; solve this "
           << "scene with Solver/Method = monolithic ("
           << suggested_alpha_range() << ").";
@@ -487,8 +593,12 @@ namespace coaxfit
     std::ostringstream  line;
     line << std::setw(6) << s.step << "  "
          << (s.neumann ? "Neumann  " : "Dirichlet") << "  " << std::fixed
-         << std::setprecision(4) << s.alpha << "  " << std::scientific
-         << std::setprecision(3);
+         << std::setprecision(4);
+    if (std::isfinite(s.alpha))
+      line << s.alpha;
+    else
+      line << "     -"; // the interface block model has no alpha
+    line << "  " << std::scientific << std::setprecision(3);
     if (s.neumann)
       line << s.displacement_mismatch << "   -";
     else
@@ -510,13 +620,25 @@ namespace coaxfit
     // pressure, scaled after the step), whose compliances give the
     // Winkler alpha of the first Dirichlet step; the fixed rule from the
     // paper's zero approximation.
-    start_loaded = rule->adaptive();
+    start_loaded = rule->adaptive() || block_model;
     if (start_loaded)
       next_force = interface.weights();
     if (initial_force.size() == n)
       {
         next_force   = initial_force;
         start_loaded = true;
+      }
+    if (block_model)
+      {
+        block_model->clear_samples();
+        if (coarse_model && !block_model->has_prior())
+          {
+            block_model->set_prior(InterfaceBlockModel::shaft,
+                                   coarse_model->compliance_prior(0));
+            block_model->set_prior(InterfaceBlockModel::hub,
+                                   coarse_model->compliance_prior(1));
+            ++n_coarse_priors;
+          }
       }
     u1.reinit(n);
     u2.reinit(n);
@@ -573,7 +695,7 @@ namespace coaxfit
     SolverStatistics s;
     s.method      = "staggered";
     s.alpha_rule  = rule->name();
-    s.accelerator = accelerator->name();
+    s.accelerator = block_model ? "ibqn" : accelerator->name();
     if (coarse_model)
       {
         s.coarse_model_points = coarse_model->n_coarse_points();

@@ -1,5 +1,6 @@
 #include <coaxfit/result_writers.h>
 
+#include <cmath>
 #include <fstream>
 
 namespace coaxfit
@@ -12,10 +13,15 @@ namespace coaxfit
     std::ofstream     out  = open_result_file(directory + "/" + name);
     out << "step,kind,alpha,displacement_mismatch_relative,"
            "traction_mismatch_relative\n";
+    // No alpha (an empty field) where the method has none (ibqn).
     for (const CouplingStep &s : results.solver.history())
-      out << s.step << ',' << (s.neumann ? "neumann" : "dirichlet") << ','
-          << s.alpha << ',' << s.displacement_mismatch << ','
-          << s.traction_mismatch << '\n';
+      {
+        out << s.step << ',' << (s.neumann ? "neumann" : "dirichlet") << ',';
+        if (std::isfinite(s.alpha))
+          out << s.alpha;
+        out << ',' << s.displacement_mismatch << ',' << s.traction_mismatch
+            << '\n';
+      }
     close_result_file(out, directory + "/" + name);
     return name + ": " + std::to_string(results.solver.history().size())
            + " steps";

@@ -112,8 +112,10 @@ namespace coaxfit
       const SolverStatistics &statistics = results.statistics;
       const auto             &c          = results.parameters.coupling;
       Json                    alpha      = Json::array();
+      // Empty where the method has no alpha (ibqn).
       for (const CouplingStep &s : solver.history())
-        alpha.push_back(s.alpha);
+        if (std::isfinite(s.alpha))
+          alpha.push_back(s.alpha);
       Json j;
       j["coupling"]
         = {{"controller",

@@ -80,6 +80,14 @@ namespace coaxfit
     void
     assume(const std::vector<bool> &flags);
 
+    /**
+     * Set the flags to @p flags (a solution of the contact problem of a
+     * model); ignored if the pass is disabled. Returns true if the set
+     * changed, and counts the change.
+     */
+    bool
+    set(const std::vector<bool> &flags);
+
     /** Contact flag of every point (the Dirichlet step's prescribed set). */
     const std::vector<bool> &
     in_contact() const

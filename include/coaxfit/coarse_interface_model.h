@@ -1,17 +1,39 @@
 #ifndef coaxfit_coarse_interface_model_h
 #define coaxfit_coarse_interface_model_h
 
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <coaxfit/contact_interface.h>
 #include <coaxfit/interface_operator.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
 {
   using namespace dealii;
+
+  /**
+   * The interface compliance of one body for short waves of the pressure,
+   * p = p0 cos(k z) -> u = c(k) p: a half-space, c = 2 (1 - nu^2) / (E k),
+   * or where its wall behind S is thin, a cylindrical shell of thickness t
+   * on radius R, c = 1 / (D k^4 + E t / R^2), D = E t^3 / (12 (1 - nu^2)),
+   * whichever is the more compliant (a wall with a free back face answers
+   * at least as much as a half-space).
+   */
+  struct ShortWaveCompliance
+  {
+    double E;
+    double nu;
+    double radius; ///< of S
+    double wall;   ///< thickness behind S; 0: a solid shaft (half-space)
+
+    /** c(k) for the wave number @p k (1/mm), in mm/MPa. */
+    double
+    operator()(double k) const;
+  };
 
   /**
    * The staggered process's fixed-point map on the same case meshed one
@@ -42,16 +64,18 @@ namespace coaxfit
      * (condensed: a column costs O(n^2)) on the interface @p coarse; the
      * fine run's interface @p fine. Every coarse point must lie on a fine
      * point (a refinement of the coarse mesh). Only the points' positions
-     * and weights are taken from the interfaces. @p short_wave_ratio is the
-     * ratio shaft / hub of the compliances of short waves, for which both
-     * bodies answer as half-spaces: E_hub (1 - nu_shaft^2) /
-     * (E_shaft (1 - nu_hub^2)).
+     * and weights are taken from the interfaces. @p short_waves gives the
+     * compliances of shaft and hub for waves the coarse mesh cannot
+     * represent, taken at the fine points' Nyquist wave number pi / h.
+     * @p degree is that of the elements (the transfer of pressures is
+     * their interpolation: quadratic for 2, linear otherwise).
      */
-    CoarseInterfaceModel(InterfaceOperator      &coarse_shaft,
-                         InterfaceOperator      &coarse_hub,
-                         const ContactInterface &coarse,
-                         const ContactInterface &fine,
-                         double                  short_wave_ratio);
+    CoarseInterfaceModel(InterfaceOperator                        &coarse_shaft,
+                         InterfaceOperator                        &coarse_hub,
+                         const ContactInterface                   &coarse,
+                         const ContactInterface                   &fine,
+                         const std::array<ShortWaveCompliance, 2> &short_waves,
+                         unsigned int                              degree);
 
     /**
      * The prior J (n x n row-major, n fine points) for the fine map with the
@@ -61,6 +85,18 @@ namespace coaxfit
     std::vector<double>
     inverse_jacobian_prior(const std::vector<double> &alpha,
                            const std::vector<bool>   &contact);
+
+    /**
+     * A prior of the fine interface compliance of body @p body (0: shaft,
+     * 1: hub; n x n row-major, u = C F in the fine nodal forces F) for the
+     * interface block model (Coupling/Accelerator = ibqn): the coarse
+     * body's answer to the coarse pressures of F (the weighted
+     * least-squares restriction), interpolated to the fine points, plus a
+     * half-space compliance for the short waves the coarse mesh cannot
+     * represent. Costs one coarse Neumann solve per coarse point.
+     */
+    std::vector<double>
+    compliance_prior(unsigned int body);
 
     /**
      * The fine nodal forces of the coarse nodal forces @p coarse_force:
@@ -96,6 +132,13 @@ namespace coaxfit
     fine_points_at(const ContactInterface &coarse,
                    const ContactInterface &fine);
 
+    /**
+     * Q W_f^-1 (coarse points x fine points): the weighted least-squares
+     * restriction of fine nodal forces to coarse pressures.
+     */
+    LAPACKFullMatrix<double>
+    force_restriction() const;
+
     /** Column j of E: the coarse map's answer to a unit force at j. */
     void
     map_column(unsigned int               j,
@@ -107,7 +150,11 @@ namespace coaxfit
     InterfaceOperator &coarse_hub;
     /** Lumped weights of the coarse and the fine points. */
     const Vector<double> coarse_weights, fine_weights;
-    const double         short_wave_ratio;
+    /**
+     * Short-wave compliances c(pi / h_i) of shaft (0) and hub (1) at each
+     * fine point (h_i: the mean distance to its neighbours), mm/MPa.
+     */
+    std::array<std::vector<double>, 2> short_wave;
     /** The fine point at each coarse point. */
     std::vector<unsigned int> coarse_index;
     /**
@@ -116,6 +163,12 @@ namespace coaxfit
      */
     std::vector<unsigned int>          left;
     std::vector<std::array<double, 2>> interpolation;
+    /**
+     * The transfer P of pressures: row i lists (coarse point, weight) of
+     * fine point i (the coarse elements' interpolation). The contact flags
+     * use the linear interpolation above.
+     */
+    std::vector<std::vector<std::pair<unsigned int, double>>> transfer;
   };
 } // namespace coaxfit
 

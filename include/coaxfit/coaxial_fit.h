@@ -15,6 +15,7 @@
 #include <coaxfit/pressure_summary.h>
 #include <coaxfit/staggered_coupling.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -222,12 +223,9 @@ namespace coaxfit
      */
     bool
     wants_coarse_model() const;
-    /**
-     * Ratio shaft / hub of the interface compliances of short waves (both
-     * bodies half-spaces): E_hub (1 - nu_shaft^2) / (E_shaft (1 - nu_hub^2)).
-     */
-    double
-    short_wave_ratio() const;
+    /** The short-wave interface compliances of shaft and hub. */
+    std::array<ShortWaveCompliance, 2>
+    short_wave_compliances() const;
     /**
      * The coarse model for the interface @p contact of this case (the
      * coarser case set up, its condensed operators formed); null if the

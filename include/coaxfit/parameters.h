@@ -167,7 +167,9 @@ namespace coaxfit
     winkler,
     pointwise,
     aitken,
-    iqn_ils
+    iqn_ils,
+    ibqn,     ///< interface block quasi-Newton (no alpha)
+    automatic ///< ibqn where a coarse model exists, iqn-ils elsewhere
   };
 
   /** How alpha is chosen (`Coupling/Alpha rule`). */
@@ -185,7 +187,8 @@ namespace coaxfit
     automatic, ///< as the Alpha controller preset says
     none,
     aitken,
-    iqn_ils
+    iqn_ils,
+    ibqn ///< interface block quasi-Newton with the contact inside
   };
 
   /** Which operator of a body the coupling iterates with. */
@@ -212,7 +215,7 @@ namespace coaxfit
   struct CouplingParameters
   {
     double                alpha              = 0.8;
-    AlphaControllerPreset controller         = AlphaControllerPreset::iqn_ils;
+    AlphaControllerPreset controller         = AlphaControllerPreset::automatic;
     AlphaRuleType         rule               = AlphaRuleType::automatic;
     AcceleratorType       acceleration       = AcceleratorType::automatic;
     double                tolerance          = 1e-8;
@@ -245,9 +248,14 @@ namespace coaxfit
     AlphaRuleType
     alpha_rule() const;
 
-    /** The accelerator in use: Accelerator, or the preset's if automatic. */
+    /**
+     * The accelerator in use: Accelerator, or the preset's if automatic.
+     * @p coarse_model tells whether the coarse model of Coupling/Coarse
+     * model is available: the auto preset takes ibqn with it and iqn-ils
+     * without (ibqn's prior of the bodies' compliances comes from it).
+     */
     AcceleratorType
-    accelerator() const;
+    accelerator(bool coarse_model = true) const;
   };
 
   /** When the contact / separated flags change. */

@@ -6,6 +6,7 @@
 #include <coaxfit/body_solver.h>
 #include <coaxfit/coarse_interface_model.h>
 #include <coaxfit/contact_interface.h>
+#include <coaxfit/interface_block_model.h>
 #include <coaxfit/interface_operator.h>
 #include <coaxfit/interface_solver.h>
 #include <coaxfit/parameters.h>
@@ -91,6 +92,24 @@ namespace coaxfit
   private:
     void
     neumann_step();
+
+    /**
+     * Give the interface block model (Coupling/Accelerator = ibqn) the
+     * bodies' latest answers u1, u2 to the forces @p f_shaft, @p f_hub;
+     * without a coarse model the first ones also give its Winkler prior.
+     */
+    void
+    add_block_model_samples(const Vector<double> &f_shaft,
+                            const Vector<double> &f_hub);
+
+    /**
+     * Let the interface block model's solution of the contact problem set
+     * the contact flags and the data of the next step (next_force,
+     * model_displacement). Returns whether the flags stayed and the
+     * model's active set iteration settled.
+     */
+    bool
+    predict_from_block_model();
 
     /** Update the active set from the state of a Neumann step. */
     void
@@ -186,6 +205,14 @@ namespace coaxfit
     std::set<std::vector<bool>> visited_sets;
     /** What the accelerator keeps when the contact points change. */
     const HistoryOnChange history_on_change;
+    /**
+     * The interface block model (Coupling/Accelerator = ibqn); null for the
+     * other accelerators. Its prediction gives the Neumann steps' forces
+     * and the Dirichlet steps' displacement (model_displacement), alpha
+     * plays no part.
+     */
+    std::unique_ptr<InterfaceBlockModel> block_model;
+    Vector<double>                       model_displacement;
     /** The coarse model of the prior; null without one. */
     std::unique_ptr<CoarseInterfaceModel> coarse_model;
     /** Alpha and contact points of the prior in use. */

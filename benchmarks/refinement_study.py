@@ -2,7 +2,7 @@
 """Mesh refinement study of the mid-plane and mean contact pressure.
 
 For every case (prm/lame.prm, prm/variant_01..18.prm, default settings:
-iqn-ils, unilateral) runs coaxfit at global refinements 0..N (default 4) and
+auto controller: iqn-ils on refinement 0, ibqn above; unilateral) runs coaxfit at global refinements 0..N (default 4) and
 reports the pressure at z = 0, the mean pressure over the contact and their
 relative change against the finest level. Writes
 benchmarks/refinement_study.csv and prints a markdown table.

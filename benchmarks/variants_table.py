@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """All 18 variants and the Lame case: the paper's process (constant alpha*
-of the table, bilateral, every-step) and the default (iqn-ils, unilateral)
+of the table, bilateral, every-step) and the default (auto = ibqn, unilateral)
 on the shipped mesh. Records iterations to max|du|/d < 1e-2 and to the
 tolerance 1e-8, mid-plane, mean, peak and minimum pressure and separated
 zones. Writes benchmarks/variants_table.csv and prints markdown.
@@ -13,7 +13,7 @@ from coaxfit_run import ROOT, markdown_table, run, write_csv
 MODES = {
     "paper process (fixed alpha*, bilateral)": ["Coupling/Alpha controller=fixed",
                                                 "Contact/Unilateral=false"],
-    "default (iqn-ils, unilateral)": [],
+    "default (auto = ibqn, unilateral)": [],
 }
 
 rows = []

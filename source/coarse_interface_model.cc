@@ -200,8 +200,9 @@ namespace coaxfit
         scaled(a, b) = M(a, b) * wc[b] / wc[a];
     scaled.mmult(T, restriction);
 
-    // Short waves: both bodies answer as half-spaces, one mode ratio
-    // lambda of the compliances; the double step multiplies their error by
+    // Short waves: both bodies answer as half-spaces or shells
+    // (ShortWaveCompliance), with the ratio lambda of their compliances at
+    // each point; the double step multiplies their error by
     // N = -(alpha sqrt(lambda) - (1 - alpha) / sqrt(lambda))^2 (4.17), so
     // the exact step there is 1 / (1 - N).
     std::vector<double> J(nf * nf);

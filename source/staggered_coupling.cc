@@ -573,7 +573,11 @@ namespace coaxfit
     // Advice that fits what ran: a constant alpha can be changed or
     // accelerated; an accelerated run that fails has the monolithic solver
     // left (the same discrete problem, solved at once).
-    if (block_model || accelerator->name() == "iqn-ils")
+    if (block_model)
+      msg << "the models of the bodies' compliances could not recover; "
+          << "try Coupling/Alpha controller = iqn-ils, or solve this scene "
+          << "with Solver/Method = monolithic.";
+    else if (accelerator->name() == "iqn-ils")
       msg << "the quasi-Newton iteration could not recover; solve this "
           << "scene with Solver/Method = monolithic ("
           << suggested_alpha_range() << ").";

@@ -36,10 +36,12 @@ namespace coaxfit
   };
 
   /**
-   * The staggered process's fixed-point map on the same case meshed one
-   * refinement coarser, as a model of the fine map for the quasi-Newton
-   * accelerator (multi-level acceleration: the coarse model's Jacobian is
-   * the prior of the fine inverse Jacobian, IQN-IMVJ).
+   * The same case meshed one refinement coarser, as a model of the fine
+   * one (multi-level acceleration): for ibqn the bodies' compliances
+   * (compliance_prior()), for iqn-ils the staggered process's fixed-point
+   * map, whose Jacobian is the prior of the fine inverse Jacobian
+   * (IQN-IMVJ, inverse_jacobian_prior()); and the transfers of the coarse
+   * solution the fine run starts from.
    *
    * The map x -> G(x) of one Neumann and one Dirichlet step is affine in
    * the nodal contact force x; its linear part E (zero interference) is
@@ -48,13 +50,13 @@ namespace coaxfit
    * flags. The quasi-Newton step x + (I - E)^-1 r for the residual
    * r = G(x) - x is exact for a linear map; written as
    * G(x) + J r it needs J = (I - E)^-1 - I. The prior is that J on the
-   * coarse interface between the transfers of the forces: restriction
-   * F_c = P^T F (the work-conjugate of the interpolation P of u_r,
-   * piecewise linear in z between coarse points) and prolongation of the
-   * coarse pressures F_c / w_c by P to fine forces w P (F_c / w_c). What
-   * the coarse mesh cannot represent (short waves, the corner) gets no
-   * prior: there the step is the plain one and the least-squares model of
-   * the history acts.
+   * coarse interface between the transfers of the pressures p = F / w:
+   * P interpolates coarse pressures with the elements' shape functions
+   * (quadratic for FE_Q(2)), Q = (P^T W_f P)^-1 P^T W_f restricts fine ones
+   * by weighted least squares. What the coarse mesh cannot represent
+   * (short waves, the corner) gets the exact step for two half-spaces or
+   * shells (ShortWaveCompliance), and the least-squares model of the
+   * history acts there.
    */
   class CoarseInterfaceModel
   {
@@ -66,7 +68,9 @@ namespace coaxfit
      * point (a refinement of the coarse mesh). Only the points' positions
      * and weights are taken from the interfaces. @p short_waves gives the
      * compliances of shaft and hub for waves the coarse mesh cannot
-     * represent, taken at the fine points' Nyquist wave number pi / h.
+     * represent, taken at k = pi / (sqrt(2) h) (h: the spacing of the fine
+     * points), the geometric middle of the band between the coarse and the
+     * fine points' Nyquist wave numbers.
      * @p degree is that of the elements (the transfer of pressures is
      * their interpolation: quadratic for 2, linear otherwise).
      */
@@ -151,8 +155,8 @@ namespace coaxfit
     /** Lumped weights of the coarse and the fine points. */
     const Vector<double> coarse_weights, fine_weights;
     /**
-     * Short-wave compliances c(pi / h_i) of shaft (0) and hub (1) at each
-     * fine point (h_i: the mean distance to its neighbours), mm/MPa.
+     * Short-wave compliances c(pi / (sqrt(2) h_i)) of shaft (0) and hub (1)
+     * at each fine point (h_i: the mean distance to its neighbours), mm/MPa.
      */
     std::array<std::vector<double>, 2> short_wave;
     /** The fine point at each coarse point. */

@@ -215,7 +215,18 @@ namespace coaxfit
     // The auto controller: ibqn with a coarse model, iqn-ils without.
     CouplingParameters coupling = parameters.coupling;
     coupling.acceleration       = coupling.accelerator(model != nullptr);
-    auto staggered              = std::make_unique<StaggeredCoupling>(
+    // ibqn's models are dense (n^2 numbers per body, O(n^3) per step).
+    if (coupling.acceleration == AcceleratorType::ibqn
+        && contact.n_points() > max_condensed_points)
+      throw InputError(
+        "Coupling/Alpha controller (or Coupling/Accelerator) = ibqn keeps "
+        "dense models of the bodies' interface compliances and allows at "
+        "most "
+        + std::to_string(max_condensed_points)
+        + " interface points; this mesh has "
+        + std::to_string(contact.n_points())
+        + ". Use auto (iqn-ils there) or iqn-ils.");
+    auto staggered = std::make_unique<StaggeredCoupling>(
       *shaft_solver,
       *hub_solver,
       *shaft_operator,

@@ -768,7 +768,8 @@ namespace coaxfit
       Patterns::Anything(),
       "In the when-converged mode the flags are updated once both "
       "relative mismatches are below this value (or Coupling/Tolerance if "
-      "larger). Each update restarts the accelerator, so from a uniform "
+      "larger). Not used by ibqn, whose model sets the flags after every "
+      "step. Each update restarts the accelerator, so from a uniform "
       "start a rough first guess of the zone is cheaper than an accurate "
       "one (0.1 halves the steps of the separating variants against "
       "1e-4), while flags predicted by the coarser mesh (Coupling/Coarse "

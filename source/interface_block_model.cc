@@ -159,6 +159,17 @@ namespace coaxfit
       }
     if (!unilateral)
       std::fill(contact.begin(), contact.end(), true);
+    // Nothing to close or open (no interference anywhere, e.g. a speed
+    // solve at rest): the solution is F = 0, u = 0 whatever the flags; an
+    // active-set iteration would only sort the round-off.
+    if (std::all_of(interference.begin(), interference.end(), [](double d) {
+          return d == 0.;
+        }))
+      {
+        force.reinit(n);
+        u_shaft.reinit(n);
+        return true;
+      }
 
     // Primal-dual active set: F = 0 at separated points, g = 0 at contact
     // points; then a contact point with a tensile force separates and a

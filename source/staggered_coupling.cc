@@ -79,8 +79,8 @@ namespace coaxfit
     force = next_force;
     concurrently([&]() { shaft.solve_neumann(force, u1); },
                  [&]() { hub.solve_neumann(force, u2); });
-    // The model takes the solves as they are: a scaled first step is exact
-    // only without body loads (temperature, speed).
+    // The model takes the solve as it is (the scaled first step may be a
+    // zero force).
     if (block_model)
       add_block_model_samples(force, force);
     if (history_rows.empty() && start_loaded && initial_force.size() == 0)
@@ -634,7 +634,14 @@ namespace coaxfit
       }
     if (block_model)
       {
+        // The maps F -> u are linear (the displacements of loads of
+        // operation are part of the interference): no force, no
+        // displacement, an exact sample that makes the model independent
+        // of the scale of the first one.
         block_model->clear_samples();
+        const Vector<double> zero(n);
+        block_model->add_sample(InterfaceBlockModel::shaft, zero, zero);
+        block_model->add_sample(InterfaceBlockModel::hub, zero, zero);
         if (coarse_model && !block_model->has_prior())
           {
             block_model->set_prior(InterfaceBlockModel::shaft,

@@ -16,8 +16,10 @@ namespace coaxfit
    * the contact conditions inside the model).
    *
    * Each body b answers nodal contact forces F on S with radial
-   * displacements u_b = a_b + C_b F: an affine map that does not depend on
-   * which points are in contact. Every solve of a body, Neumann or
+   * displacements u_b = C_b F (the displacements of loads of operation are
+   * part of the interference d): a linear map that does not depend on
+   * which points are in contact; the coupling gives the model the exact
+   * sample F = 0, u = 0 first. Every solve of a body, Neumann or
    * Dirichlet, with any set of contact points, is a sample (F, u) of that
    * map, so none is ever out of date. The model keeps a compliance
    * B_b = B0_b + (dU - B0_b dF)(dF^T dF)^-1 dF^T for each body, a prior B0_b

@@ -228,10 +228,12 @@ namespace coaxfit
 
     /**
      * The child's work: run the case with its output going to @p out_fd,
-     * @p err_fd and its figures to @p row_fd; never returns.
+     * @p err_fd and its figures to @p row_fd; never returns. It ends when
+     * the process @p parent does.
      */
     [[noreturn]] void
     run_child(const BatchCase &c,
+              const int        parent,
               const bool       one_thread,
               const bool       verbose,
               const int        out_fd,
@@ -241,7 +243,7 @@ namespace coaxfit
       int code = 3;
       try
         {
-          Interruption::restart_after_fork();
+          Interruption::restart_after_fork(parent);
           if (::dup2(out_fd, STDOUT_FILENO) < 0
               || ::dup2(err_fd, STDERR_FILENO) < 0)
             _exit(3);
@@ -343,11 +345,13 @@ namespace coaxfit
             std::cout.flush();
             std::cerr.flush();
             std::unique_lock<std::mutex> lock(Interruption::mutex());
-            const pid_t                  pid = ::fork();
+            const pid_t                  parent = ::getpid();
+            const pid_t                  pid    = ::fork();
             if (pid == 0)
               {
                 lock.unlock();
-                run_child(c, one_thread, verbose, r.out_fd, r.err_fd, r.row_fd);
+                run_child(
+                  c, parent, one_thread, verbose, r.out_fd, r.err_fd, r.row_fd);
               }
             if (pid < 0)
               {

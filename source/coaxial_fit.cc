@@ -671,7 +671,7 @@ namespace coaxfit
     ResultDirectory directory(parameters.output_directory(),
                               all_result_file_names());
     const bool      converged = run_in(directory.staging_path());
-    directory.commit();
+    directory.commit(out);
     pcout << "  results in " << parameters.output_directory() << '\n';
     return converged;
   }

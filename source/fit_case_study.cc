@@ -94,7 +94,7 @@ namespace coaxfit
         all_converged = all_converged && converged;
       }
     output_results(directory.staging_path());
-    directory.commit();
+    directory.commit(out);
     if (verbose)
       out << "  results in " << parameters.output_directory()
           << " (subdirectories min, mean, max)\n";

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <set>
 #include <stdexcept>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -114,8 +115,16 @@ namespace coaxfit
 
 
     void
-    restart_after_fork()
+    restart_after_fork(const int parent)
     {
+      // A case dies with its parent (also by SIGKILL, which cannot pass
+      // the signal on): SIGTERM when the parent's forking thread ends. That
+      // thread waits for every case before it returns (CaseBatch::run), so
+      // it ends before its cases only when the process dies. The watcher
+      // of this process is started below, so the signal removes the
+      // case's staging directory like any SIGTERM.
+      if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0)
+        throw std::runtime_error("cannot tie the case to its parent");
       ::close(signal_pipe[0]);
       ::close(signal_pipe[1]);
       staging_directory.clear();
@@ -123,6 +132,9 @@ namespace coaxfit
       committed = false;
       children.clear();
       install();
+      // The parent may have died before PR_SET_PDEATHSIG took effect.
+      if (::getppid() != parent)
+        handle_signal(SIGTERM);
     }
 
 

@@ -18,6 +18,7 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <utility>
 #include <vector>
@@ -32,6 +33,26 @@ namespace
     std::cout.flush();
     if (!std::cout)
       throw coaxfit::ResourceError("cannot write to standard output");
+  }
+
+
+
+  /**
+   * Standard output must be able to take the report before any work: it is
+   * not /dev/full (also what a closed standard output is opened on, see
+   * ensure_standard_descriptors()). Other failures to write show when the
+   * results are committed (ResultDirectory::commit), which then does not
+   * happen.
+   */
+  void
+  check_standard_output_usable()
+  {
+    struct stat out = {}, full = {};
+    if (::fstat(STDOUT_FILENO, &out) == 0 && S_ISCHR(out.st_mode)
+        && ::stat("/dev/full", &full) == 0 && out.st_rdev == full.st_rdev)
+      throw coaxfit::ResourceError(
+        "standard output is /dev/full (or was closed): the report could not "
+        "be shown; nothing was run or written");
   }
 
 
@@ -128,7 +149,8 @@ namespace
       throw InputError(said + "exists and is not a regular file");
     for (const std::string &input : inputs)
       if (fs::equivalent(path, input, error))
-        throw InputError(said + "is the parameter file " + input);
+        throw InputError(said + "is the parameter file " + input
+                         + ", read by this run");
     for (const Target &target : targets)
       if (is_within(path, target.resolved))
         throw InputError(said + "lies in " + target.given
@@ -137,10 +159,17 @@ namespace
     fs::path existing = path.parent_path();
     while (!existing.empty() && !fs::exists(existing, error))
       existing = existing.parent_path();
-    if (existing.empty() || !fs::is_directory(existing, error)
-        || ::access(existing.c_str(), W_OK | X_OK) != 0)
+    // A file is really created there and removed (access() says yes to
+    // root in /proc and on read-only mounts).
+    std::string probe = (existing / ".coaxfit-table-probe-XXXXXX").string();
+    const int   fd    = existing.empty() || !fs::is_directory(existing, error) ?
+                          -1 :
+                          ::mkstemp(probe.data());
+    if (fd < 0)
       throw InputError(said + "cannot be written (" + existing.string()
-                       + " is not a writable directory)");
+                       + " is not a writable directory); nothing was run");
+    ::close(fd);
+    ::unlink(probe.c_str());
   }
 
   /**
@@ -151,8 +180,9 @@ namespace
   run_files(const CommandLine &line, const unsigned int jobs)
   {
     using namespace coaxfit;
-    std::vector<BatchCase> cases(line.filenames.size());
-    std::vector<Target>    targets;
+    std::vector<BatchCase>   cases(line.filenames.size());
+    std::vector<Target>      targets;
+    std::vector<std::string> inputs = line.filenames; // and their includes
     for (unsigned int i = 0; i < cases.size(); ++i)
       {
         BatchCase &c = cases[i];
@@ -161,19 +191,12 @@ namespace
           {
             auto p = std::make_shared<Parameters>(
               read_parameters(line.filenames[i], line.overrides));
-            const std::filesystem::path target
-              = resolved(p->output_directory());
-            for (const Target &other : targets)
-              if (is_within(target, other.resolved)
-                  || is_within(other.resolved, target))
-                throw InputError(
-                  "parameter Output/Directory = " + p->output_directory()
-                  + (target == other.resolved          ? " is also that of " :
-                     is_within(target, other.resolved) ? " lies in that of " :
-                                                         " contains that of ")
-                  + other.file + " (each case needs a directory of its own)");
-            targets.push_back(
-              {target, p->output_directory(), line.filenames[i]});
+            targets.push_back({resolved(p->output_directory()),
+                               p->output_directory(),
+                               line.filenames[i]});
+            inputs.insert(inputs.end(),
+                          p->files_read.begin(),
+                          p->files_read.end());
             c.parameters = p;
           }
         catch (const InputError &e)
@@ -181,6 +204,24 @@ namespace
             c.input_error = e.what();
           }
       }
+    // Two cases whose directories are one or lie in each other would
+    // replace each other's results: the whole batch is refused before any
+    // case runs.
+    for (unsigned int i = 0; i < targets.size(); ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        {
+          const Target &a = targets[i], &b = targets[j];
+          if (is_within(a.resolved, b.resolved)
+              || is_within(b.resolved, a.resolved))
+            throw InputError(
+              "parameter Output/Directory = " + a.given + " of " + a.file
+              + (a.resolved == b.resolved          ? " is also that of " :
+                 is_within(a.resolved, b.resolved) ? " lies in that of " :
+                                                     " contains that of ")
+              + b.file + " (" + b.given
+              + "); each case needs a directory of its own, none inside "
+                "another's; nothing was run");
+        }
     std::string table = line.table;
     if (table.empty())
       for (const BatchCase &c : cases)
@@ -195,7 +236,7 @@ namespace
             break;
           }
     if (!table.empty())
-      check_table(table, line.filenames, targets);
+      check_table(table, inputs, targets);
 
     const std::vector<CaseOutcome> outcomes
       = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
@@ -206,7 +247,17 @@ namespace
         std::error_code error;
         std::filesystem::create_directories(
           std::filesystem::path(table).parent_path(), error);
-        write_file_atomically(table, CaseBatch::table_csv(cases, outcomes));
+        try
+          {
+            write_file_atomically(table, CaseBatch::table_csv(cases, outcomes));
+          }
+        catch (const std::exception &e)
+          {
+            throw ResourceError(
+              std::string(e.what())
+              + "; the table was not written, but the cases' own results "
+                "are in place in their output directories");
+          }
         std::cout << "  table in " << table << std::endl;
       }
     return CaseBatch::exit_code(outcomes);
@@ -309,6 +360,7 @@ namespace
             return 0;
           }
 
+        check_standard_output_usable();
         const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
         if (line.sweep)
           {

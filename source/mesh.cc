@@ -124,6 +124,19 @@ namespace coaxfit
 
 
 
+  double
+  predicted_axial_points(const BodyGeometry &geometry,
+                         const unsigned int  degree)
+  {
+    const double cells_per_line = std::pow(2., geometry.global_refinements);
+    return std::min(degree * body_spacing(geometry).second.size()
+                        * cells_per_line
+                      + 1.,
+                    1e18);
+  }
+
+
+
   void
   make_body_mesh(Triangulation<2> &triangulation, const BodyGeometry &geometry)
   {

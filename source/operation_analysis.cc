@@ -249,8 +249,14 @@ namespace coaxfit
     s << std::setprecision(4) << "    joining (U_max " << joining_interference
       << " mm + clearance " << joining_clearance
       << " mm, DIN 7190): heat the hub to "
-      << temperature(joining_temperature_hub) << " or cool the shaft to "
-      << temperature(joining_temperature_shaft)
+      << temperature(joining_temperature_hub)
+      // Hubs of quenched and tempered steel lose strength above their
+      // tempering temperature; 350 C is the usual limit for heating.
+      << (joining_temperature_hub > 350. ?
+            " (above 350 C, the usual limit for heating a steel hub: "
+            "tempering and scaling; check the material)" :
+            "")
+      << " or cool the shaft to " << temperature(joining_temperature_shaft)
       << (joining_temperature_shaft <= -273.15 ?
             " (impossible: below absolute zero)" :
           joining_temperature_shaft < -196. ?

@@ -1,6 +1,7 @@
 #include <coaxfit/input_error.h>
 #include <coaxfit/parameter_file.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,8 +11,37 @@ namespace coaxfit
 {
   namespace
   {
-    constexpr unsigned int max_include_depth = 16;
-    constexpr unsigned int max_nesting       = 32;
+    constexpr unsigned int   max_include_depth = 16;
+    constexpr unsigned int   max_nesting       = 32;
+    constexpr std::uintmax_t max_file_size     = 16u << 20; // 16 MiB
+
+    /**
+     * A parameter file must be a regular file (not a directory, device or
+     * pipe, which deal.II would skip or read for ever) of at most 16 MiB.
+     * @p what says how it was named (the command line or an include line).
+     */
+    void
+    check_readable(const std::string &filename, const std::string &what)
+    {
+      namespace fs = std::filesystem;
+      std::error_code       error;
+      const fs::file_status status = fs::status(filename, error);
+      if (status.type() == fs::file_type::not_found)
+        return; // deal.II names a file it cannot open, with the line
+      if (status.type() == fs::file_type::directory)
+        throw InputError(what + " '" + filename
+                         + "' is a directory, not a parameter file");
+      if (status.type() != fs::file_type::regular)
+        throw InputError(what + " '" + filename
+                         + "' is not a regular file (a device, pipe or "
+                           "socket); give a parameter file");
+      const std::uintmax_t size = fs::file_size(filename, error);
+      if (!error && size > max_file_size)
+        throw InputError(what + " '" + filename + "' has "
+                         + std::to_string(size)
+                         + " bytes; a parameter file may have at most "
+                         + std::to_string(max_file_size) + " (16 MiB)");
+    }
 
     bool
     ends_with(const std::string &text, const std::string &suffix)
@@ -40,8 +70,14 @@ namespace coaxfit
     }
 
     void
-    check_includes(const std::string &filename, std::vector<std::string> &chain)
+    check_includes(const std::string        &filename,
+                   std::vector<std::string> &chain,
+                   std::vector<std::string> &files)
     {
+      check_readable(filename,
+                     chain.empty() ? "parameter file" :
+                                     "included file (line 'include " + filename
+                                       + "' of " + chain.back() + ")");
       std::error_code   error;
       const std::string id
         = std::filesystem::weakly_canonical(filename, error).string();
@@ -58,12 +94,13 @@ namespace coaxfit
       if (!in)
         return; // deal.II reports a file it cannot open, with the line
       chain.push_back(id);
+      files.push_back(id);
       std::string line;
       while (std::getline(in, line))
         {
           const std::string included = included_file(line);
           if (!included.empty())
-            check_includes(included, chain);
+            check_includes(included, chain, files);
         }
       chain.pop_back();
     }
@@ -118,17 +155,23 @@ namespace coaxfit
 
 
 
-  void
+  std::vector<std::string>
   check_parameter_file(const std::string &filename)
   {
-    if (ends_with(filename, ".json"))
-      check_nesting(filename, true);
-    else if (ends_with(filename, ".xml"))
-      check_nesting(filename, false);
+    std::vector<std::string> files;
+    if (ends_with(filename, ".json") || ends_with(filename, ".xml"))
+      {
+        check_readable(filename, "parameter file");
+        check_nesting(filename, ends_with(filename, ".json"));
+        std::error_code error;
+        files.push_back(
+          std::filesystem::weakly_canonical(filename, error).string());
+      }
     else
       {
         std::vector<std::string> chain;
-        check_includes(filename, chain);
+        check_includes(filename, chain, files);
       }
+    return files;
   }
 } // namespace coaxfit

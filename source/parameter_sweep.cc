@@ -169,7 +169,11 @@ namespace coaxfit
   {
     // The file itself must be a valid case (otherwise every value fails
     // for the same reason: one message, exit 1).
-    const Parameters base = read_parameters(filename, overrides);
+    // A sweep over Fit/Case replaces the file's case (also Case = all).
+    auto base_overrides = overrides;
+    if (sweep.entry == "Fit/Case")
+      base_overrides.emplace_back(sweep.entry, sweep.values.front());
+    const Parameters base = read_parameters(filename, base_overrides);
     if (base.fit.fit_case == FitCase::all)
       throw InputError("--sweep runs one fit case per value; Fit/Case = all "
                        "is not allowed with it (give min, mean or max)");
@@ -298,11 +302,10 @@ namespace coaxfit
     csv << CaseBatch::table_csv(cases, outcomes, sweep.entry, sweep.values);
     close_result_file(csv, directory.staging_path() + "/sweep.csv");
     const std::string plotted = plot(directory.staging_path());
-    directory.commit();
-
     out << "\ncoaxfit: sweep of " << sweep.entry << " over "
         << sweep.values.size() << " values of " << filename << '\n';
     CaseBatch::print_table(out, cases, outcomes);
+    directory.commit(out);
     out << "  " << plotted << "\n  results in " << study
         << " (sweep.csv, one subdirectory per value)" << std::endl;
     return CaseBatch::exit_code(outcomes);

@@ -193,9 +193,13 @@ namespace coaxfit
       const auto  slash = name.find_last_of('/');
       if (slash != std::string::npos)
         name = name.substr(slash + 1);
-      const auto dot = name.rfind(".prm");
-      if (dot != std::string::npos && dot + 4 == name.size())
-        name = name.substr(0, dot);
+      for (const std::string extension : {".prm", ".json", ".xml"})
+        if (name.size() > extension.size()
+            && name.compare(name.size() - extension.size(),
+                            extension.size(),
+                            extension)
+                 == 0)
+          name.resize(name.size() - extension.size());
       return name.empty() ? std::string("default") : name;
     }
 
@@ -1021,6 +1025,23 @@ namespace coaxfit
                      + " MPa) and hub (" + number(hub.E)
                      + " MPa) differ by a factor " + number(ratio)
                      + " (a unit slip: GPa or kPa for MPa?)");
+    // Volumetric locking of full integration (benchmarks/stress: the
+    // pressure of prm/lame.prm 22 % low at nu = 0.4999999 with FE_Q(1)).
+    if (!mesh.reduced_volumetric_integration())
+      {
+        const double limit = mesh.degree == 1 ? 0.49 : 0.499;
+        for (const auto &[name, nu] :
+             {std::pair<std::string, double>{"Shaft", shaft.nu},
+              {"Hub", hub.nu}})
+          if (nu > limit)
+            list.push_back(
+              "Material/" + name + "/nu = " + number(nu) + " is above "
+              + number(limit)
+              + ": with Mesh/Degree = " + std::to_string(mesh.degree)
+              + " and full integration the nearly incompressible body "
+                "locks (stiff, pressures too low); set Mesh/Volumetric "
+                "integration = reduced");
+      }
     return list;
   }
 
@@ -1087,8 +1108,9 @@ namespace coaxfit
         throw InputError("cannot read parameter file '" + filename + "'");
     }
 
-    check_parameter_file(filename);
-    Parameters       parameters;
+    const std::vector<std::string> files_read = check_parameter_file(filename);
+    Parameters                     parameters;
+    parameters.files_read = files_read;
     ParameterHandler prm;
     parameters.declare_parameters(prm);
     try

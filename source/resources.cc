@@ -92,7 +92,28 @@ namespace coaxfit
       return predicted_dofs(shaft_geometry(parameters), degree)
              + predicted_dofs(hub_geometry(parameters), degree);
     }
+
   } // namespace
+
+
+
+  double
+  estimated_memory_direct(const Parameters &parameters)
+  {
+    // The interface points are ordered last in each body's factor (the
+    // trailing block is the Schur complement on S), so each factor holds
+    // a dense block of the order of the interface points, and a body
+    // keeps several factors (sets of prescribed points). Measured peak
+    // resident size of prm/default.prm with 1 radial cell, grading 1 and
+    // 4001, 8001, 12001 interface points: 1.15, 3.50, 7.29 GB, i.e. 48
+    // bytes per (interface points)^2 beyond the sparse part; 50 taken.
+    const double n_S = predicted_axial_points(hub_geometry(parameters),
+                                              parameters.mesh.degree);
+    return estimated_memory(run_dofs(parameters), parameters.mesh.degree)
+           + (parameters.solver.method == SolverMethod::monolithic ?
+                0. :
+                50. * n_S * n_S);
+  }
 
 
 
@@ -108,8 +129,7 @@ namespace coaxfit
         case LinearSolverType::amg:
           return true;
         default:
-          return estimated_memory(run_dofs(parameters), parameters.mesh.degree)
-                 > available_memory();
+          return estimated_memory_direct(parameters) > available_memory();
       }
   }
 
@@ -120,16 +140,39 @@ namespace coaxfit
   {
     const unsigned int degree    = parameters.mesh.degree;
     const std::size_t  n_dofs    = run_dofs(parameters);
-    const double       needed    = use_amg(parameters) ?
-                                     estimated_memory_amg(n_dofs, degree) :
-                                     estimated_memory(n_dofs, degree);
+    const bool         amg       = use_amg(parameters);
+    const double       needed    = amg ? estimated_memory_amg(n_dofs, degree) :
+                                         estimated_memory_direct(parameters);
     const double       available = available_memory();
-    if (needed > available)
-      throw InputError(
-        "parameter Mesh/Global refinements = "
-        + std::to_string(parameters.mesh.global_refinements) + ": the run has "
-        + std::to_string(n_dofs) + " DoFs and needs about " + gigabytes(needed)
-        + " of memory, more than the " + gigabytes(std::max(available, 0.))
-        + " available; use fewer Global refinements or Axial/Radial cells");
+    if (needed <= available)
+      return;
+    const std::string solver
+      = parameters.solver.method == SolverMethod::monolithic ?
+          "the monolithic solver (sparse direct)" :
+          std::string(amg ? "AMG" : "the direct solver")
+            + (parameters.solver.linear_solver == LinearSolverType::automatic ?
+                 " (chosen by Solver/Linear solver = auto)" :
+                 "");
+    rlimit     limit;
+    const bool limited
+      = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+    const std::string where
+      = available > 0. ? "the " + gigabytes(available) + " available" :
+        limited        ? "what the address space limit (ulimit -v, "
+                    + gigabytes(static_cast<double>(limit.rlim_cur))
+                    + ") leaves beside the program and its libraries: "
+                      "nothing" :
+                  "the memory available: none";
+    throw InputError(
+      "parameter Mesh/Global refinements = "
+      + std::to_string(parameters.mesh.global_refinements) + ": the run has "
+      + std::to_string(n_dofs) + " DoFs and "
+      + std::to_string(static_cast<std::size_t>(
+        predicted_axial_points(hub_geometry(parameters), degree)))
+      + " interface points; with " + solver + " it needs about "
+      + gigabytes(needed) + " of memory, more than " + where
+      + "; use fewer Global refinements or Axial/Radial cells (the memory "
+        "of the staggered solver's factors grows with the square of the "
+        "interface points)");
   }
 } // namespace coaxfit

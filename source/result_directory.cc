@@ -64,6 +64,32 @@ namespace coaxfit
         throw std::runtime_error("writing '" + path
                                  + "' to disk failed: " + std::strerror(error));
     }
+
+    /**
+     * The nearest directory above @p target that holds a coaxfit result
+     * (parameters.prm beside summary.json, fit_cases.csv or sweep.csv;
+     * staging directories aside), or "".
+     */
+    std::string
+    enclosing_result(const fs::path &target)
+    {
+      std::error_code error;
+      for (fs::path above = target.parent_path();
+           !above.empty() && above != above.root_path();
+           above = above.parent_path())
+        {
+          if (above.filename().string().find(partial_marker)
+              != std::string::npos)
+            return "";
+          if (!fs::exists(above / "parameters.prm", error))
+            continue;
+          for (const char *file :
+               {"summary.json", "fit_cases.csv", "sweep.csv"})
+            if (fs::exists(above / file, error))
+              return above.string();
+        }
+      return "";
+    }
   } // namespace
 
 
@@ -117,7 +143,13 @@ namespace coaxfit
     if (error)
       refuse(target_name, "cannot resolve the path (" + error.message() + ")");
     check_path_length(target);
-    const fs::path parent = fs::path(target).parent_path();
+    const fs::path    parent    = fs::path(target).parent_path();
+    const std::string enclosing = enclosing_result(target);
+    if (!enclosing.empty())
+      refuse(target_name,
+             "lies inside " + enclosing
+               + ", an earlier coaxfit result, which a run into it replaces "
+                 "as a whole; give a directory outside it");
 
     const fs::file_status status = fs::status(target, error);
     if (status.type() == fs::file_type::directory)
@@ -220,10 +252,14 @@ namespace coaxfit
 
 
   void
-  ResultDirectory::commit()
+  ResultDirectory::commit(std::ostream &console)
   {
     if (committed || staging.empty())
       throw std::logic_error("ResultDirectory::commit() called twice");
+    console.flush();
+    if (!console)
+      throw ResourceError("cannot write to standard output; the results "
+                          "were not put in place");
     for (const auto &entry : fs::recursive_directory_iterator(staging))
       sync_path(entry.path().string(), entry.is_directory());
     sync_path(staging, true);

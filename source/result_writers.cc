@@ -2,6 +2,7 @@
 #include <coaxfit/input_error.h>
 #include <coaxfit/result_writers.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -17,6 +18,21 @@ namespace coaxfit
       throw std::runtime_error("cannot write '" + filename + "'");
     out << std::setprecision(15);
     return out;
+  }
+
+
+
+  void
+  check_values_for_output(const Vector<double> &values,
+                          const std::string    &filename)
+  {
+    for (const double v : values)
+      if (!(std::abs(v) < 1e30))
+        throw std::runtime_error(
+          "cannot write '" + filename + "': the solution has the value "
+          + std::to_string(v)
+          + ", not finite or beyond what the file's single-precision "
+            "arrays hold");
   }
 
 

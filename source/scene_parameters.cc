@@ -33,34 +33,37 @@ namespace coaxfit
                       "the shaft's seat and the hub's bore (both bodies "
                       "are meshed at it; small strain). Required. "
                       "Allowed: Shaft bore diameter < D_F < Hub outer "
-                      "diameter.",
+                      "diameter, 1e-3 to 1e5 mm.",
                       non_negative,
                       required);
     prm.add_parameter("Shaft bore diameter",
                       shaft_bore_diameter,
                       "Bore DIAMETER D_iI of a hollow shaft in mm; 0 for a "
-                      "solid shaft. Required. Allowed: 0 <= D_iI < D_F with "
-                      "a wall (D_F - D_iI)/2 of at least 5e-4 D_F.",
+                      "solid shaft. Required. Allowed: 0, or 1e-3 mm <= D_iI "
+                      "< D_F with a wall (D_F - D_iI)/2 of at least 5e-4 "
+                      "D_F.",
                       non_negative,
                       required);
     prm.add_parameter("Hub outer diameter",
                       hub_outer_diameter,
                       "Outer DIAMETER D_aA of the hub in mm. Required. "
                       "Allowed: 1.001 D_F <= D_aA <= 1e4 D_F (a wall of at "
-                      "least 5e-4 D_F).",
+                      "least 5e-4 D_F), at most 1e5 mm.",
                       non_negative,
                       required);
     prm.add_parameter("Hub length",
                       hub_length,
                       "FULL length of the hub in mm (the joint length l_F "
                       "when the shaft is longer). The hub is centred on "
-                      "the shaft. Required. Allowed: 1e-4 D_F to 1e4 D_F.",
+                      "the shaft. Required. Allowed: 1e-4 D_F to 1e4 D_F, "
+                      "and 1e-3 to 1e5 mm.",
                       non_negative,
                       required);
     prm.add_parameter("Shaft length",
                       shaft_length,
                       "FULL length of the shaft in mm, centred on the hub. "
-                      "Required. Allowed: 1e-4 D_F to 1e4 D_F.",
+                      "Required. Allowed: 1e-4 D_F to 1e4 D_F, and 1e-3 to "
+                      "1e5 mm.",
                       non_negative,
                       required);
     prm.leave_subsection();
@@ -71,6 +74,21 @@ namespace coaxfit
   void
   DrawingGeometry::validate() const
   {
+    // Absolute sizes from 1 micrometre to 100 m: every press fit, and
+    // coordinates, displacements and stresses far inside the range of the
+    // single-precision arrays of the VTU files (1e38).
+    for (const auto &[name, size] :
+         {std::pair<std::string, double>{"Geometry/Joint diameter",
+                                         joint_diameter},
+          {"Geometry/Hub outer diameter", hub_outer_diameter},
+          {"Geometry/Hub length", hub_length},
+          {"Geometry/Shaft length", shaft_length}})
+      require(size >= 1e-3 && size <= 1e5, name, size, "1e-3 to 1e5 mm");
+    require(shaft_bore_diameter == 0.
+              || (shaft_bore_diameter >= 1e-3 && shaft_bore_diameter <= 1e5),
+            "Geometry/Shaft bore diameter",
+            shaft_bore_diameter,
+            "0 (solid) or 1e-3 to 1e5 mm");
     const double D = joint_diameter;
     require(D > 0. && D > shaft_bore_diameter,
             "Geometry/Joint diameter",

@@ -558,7 +558,9 @@ namespace coaxfit
             << "differences of large nodal reactions; thin walls, with cells "
             << "of large aspect ratio, raise that level); set "
             << "Coupling/Tolerance above " << 2. * floor
-            << " or use fewer Mesh/Radial cells.";
+            << " or mesh with cells closer to square (Mesh/Axial cells, "
+            << "Radial cells and Grading ratio in the proportions of the "
+            << "walls).";
         throw SolverError(msg.str());
       }
     msg << "the coupling iteration failed at step " << last.step << " with ";

@@ -9,8 +9,11 @@ namespace coaxfit
   InterfaceVtpWriter::write(const RunResults  &results,
                             const std::string &directory) const
   {
-    const std::string       name = file_names()[0];
-    std::ofstream           out  = open_result_file(directory + "/" + name);
+    const std::string name = file_names()[0];
+    for (const Vector<double> *field :
+         {&results.shaft_field, &results.hub_field})
+      check_values_for_output(*field, directory + "/" + name);
+    std::ofstream           out = open_result_file(directory + "/" + name);
     const ContactInterface &interface = results.interface;
     const InterfaceSolver  &solver    = results.solver;
     const unsigned int      n         = interface.n_points();

@@ -88,12 +88,16 @@ namespace coaxfit
           separated += zone.second - zone.first;
           zone_list.push_back({zone.first, zone.second});
         }
-      const bool lost = set.n_separated() == results.interface.n_points()
-                        || !(results.pressure.max > 0.);
-      return {{"state",
-               lost           ? "lost" :
-               separated > 0. ? "partial" :
-                                "full"},
+      // lost: every point separated; touching: in contact without
+      // pressure (U = 0); tension: bilateral contact pulling everywhere.
+      const bool  lost = set.n_separated() == results.interface.n_points();
+      const char *state
+        = lost ? "lost" :
+          !(results.pressure.max > 0.) ?
+                 (results.pressure.min < 0. ? "tension" : "touching") :
+          separated > 0. ? "partial" :
+                           "full";
+      return {{"state", state},
               {"unilateral", set.enabled()},
               {"active_set_update",
                set.update_mode() == UnilateralActiveSet::Update::every_step ?

@@ -19,7 +19,10 @@ namespace coaxfit
     const std::string         name = file_names()[0];
     const BodyDiscretization &body = shaft ? results.shaft : results.hub;
     const std::string         file = directory + "/" + name;
-    std::ofstream             out  = open_result_file(file);
+    const Vector<double>     &field
+      = shaft ? results.shaft_field : results.hub_field;
+    check_values_for_output(field, file);
+    std::ofstream out = open_result_file(file);
     try
       {
         // The shaft is made larger than its mesh by d (radially): drawn
@@ -27,10 +30,7 @@ namespace coaxfit
         const double oversize = shaft ? results.interface.interference()
                                           / results.parameters.geometry.R1 :
                                         0.;
-        body.output_results(shaft ? results.shaft_field : results.hub_field,
-                            out,
-                            shaft ? 0 : 1,
-                            oversize);
+        body.output_results(field, out, shaft ? 0 : 1, oversize);
       }
     catch (const ExceptionBase &) // deal.II's ExcIO on a failed stream
       {

@@ -148,7 +148,8 @@ main()
       "--set \"Mesh/Axial cells=2200\" --set \"Mesh/Radial cells=1\" "
         + file_with("grading_overflow", ""));
   run("too_many_cells_beyond_contact",
-      "--set \"Mesh/Grading ratio=1\" --set \"Geometry/Shaft length=2e6\" "
+      "--set \"Mesh/Grading ratio=1\" --set \"Geometry/Shaft length=1e5\" "
+      "--set \"Geometry/Hub length=1\" "
         + file_with("too_many_cells_beyond_contact", ""));
   run("directory_name_too_long",
       "--set Output/Directory=" + std::string(300, 'x') + " "

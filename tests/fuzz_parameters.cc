@@ -1,14 +1,14 @@
 // Fuzz-style robustness: 80 random mutations (fixed seed) of a valid
 // parameter file, each run through the coaxfit executable with a 60 s
 // limit; the values tried include subnormal and huge numbers, white space
-// and control characters, Max steps 0-3, extreme cell counts and a file
-// that includes itself. Every run must end either as a valid run (exit 0
-// or 2 with a summary.json that parses and no NaN or infinity in any
-// output file) or with a clean one-line "coaxfit: error:" message and exit
-// 1 and no output directory: never a crash (signal, exit 3), a hang or a
-// multi-line error. Release only (fuzz_parameters.release.output): the 80
-// runs are mostly process start-up, and the paths they reach run in Debug
-// in bad_input.
+// and control characters, Max steps 0-3, extreme cell counts, a file
+// that includes itself, and include lines naming a directory or a device. Every
+// run must end either as a valid run (exit 0 or 2 with a summary.json that
+// parses and no NaN or infinity in any output file) or with a clean one-line
+// "coaxfit: error:" message and exit 1 and no output directory: never a crash
+// (signal, exit 3), a hang or a multi-line error. Release only
+// (fuzz_parameters.release.output): the 80 runs are mostly process start-up,
+// and the paths they reach run in Debug in bad_input.
 
 #include "run_executable.h"
 
@@ -64,12 +64,48 @@ namespace
 
   /** Values a mutation puts in place of a valid one. */
   const std::vector<std::string> tokens
-    = {"",        "-1",    "0",      "0.5",          "1e300",  "-1e-300",
-       "nan",     "inf",   "abc",    "1,5",          "0x10",   "true",
-       "2e5x",    "= 3",   "99",     "1e-9",         "1e-320", "4.9e-324",
-       "1e308",   "-0",    " 0.5\t", "0.5\x01",      "\x7f",   "1",
-       "2",       "3",     "10000",  "include SELF", "all",    "min",
-       "H7/zc11", "h7/S6", "S355",   "EN AW-6082 T6"};
+    = {"",
+       "-1",
+       "0",
+       "0.5",
+       "1e300",
+       "-1e-300",
+       "nan",
+       "inf",
+       "abc",
+       "1,5",
+       "0x10",
+       "true",
+       "2e5x",
+       "= 3",
+       "99",
+       "1e-9",
+       "1e-320",
+       "4.9e-324",
+       "1e308",
+       "-0",
+       " 0.5\t",
+       "0.5\x01",
+       "\x7f",
+       "1",
+       "2",
+       "3",
+       "10000",
+       "include SELF",
+       "all",
+       "min",
+       "H7/zc11",
+       "h7/S6",
+       "S355",
+       "EN AW-6082 T6",
+       // Huge and tiny absolute sizes, include targets that are a
+       // directory or a device.
+       "2e42",
+       "1e5",
+       "1e-4",
+       "include .",
+       "include /dev/zero",
+       "include /tmp"};
 
 
 

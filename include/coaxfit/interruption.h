@@ -49,10 +49,12 @@ namespace coaxfit
     /**
      * In a child process made by fork(): a watcher and a pipe of its own
      * (threads do not survive fork, and the parent's pipe is the
-     * parent's), no staging directory and no children yet.
+     * parent's), no staging directory and no children yet. The child is
+     * ended by SIGTERM (handled as any SIGTERM) when its parent @p parent
+     * dies, even by SIGKILL: fork from a thread that outlives the child.
      */
     void
-    restart_after_fork();
+    restart_after_fork(int parent);
 
     /**
      * Note a child process running a case (call with mutex() held): on a

@@ -88,6 +88,13 @@ namespace coaxfit
   predicted_dofs(const BodyGeometry &geometry, unsigned int degree);
 
   /**
+   * The number of points along the axis of the refined mesh of a body with
+   * FE_Q(@p degree): for the hub, its interface points.
+   */
+  double
+  predicted_axial_points(const BodyGeometry &geometry, unsigned int degree);
+
+  /**
    * Build the graded rectangular mesh of one body and set the boundary ids
    * of BoundaryId on it, then refine globally.
    */

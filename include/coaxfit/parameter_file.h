@@ -2,6 +2,7 @@
 #define coaxfit_parameter_file_h
 
 #include <string>
+#include <vector>
 
 namespace coaxfit
 {
@@ -11,9 +12,12 @@ namespace coaxfit
    * .prm file are followed (as deal.II does: the path as written, relative
    * to the working directory) and a cycle or more than 16 levels of
    * inclusion is refused; a .json or .xml file may nest at most 32 levels.
-   * Throws InputError naming the file and the line.
+   * The file and every included one must be a regular file (not a
+   * directory or a device) of at most 16 MiB. Throws InputError naming the
+   * file and the line. Returns every file read (canonical paths: the file
+   * itself and the files it includes), which no output may overwrite.
    */
-  void
+  std::vector<std::string>
   check_parameter_file(const std::string &filename);
 } // namespace coaxfit
 

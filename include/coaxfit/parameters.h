@@ -345,6 +345,12 @@ namespace coaxfit
     /** Notes of read_parameters() about the input (an ignored entry). */
     std::vector<std::string> read_notes;
 
+    /**
+     * Every file read for these parameters (canonical paths: the parameter
+     * file and the files it includes); no output may overwrite one.
+     */
+    std::vector<std::string> files_read;
+
     /** Declare every entry in @p prm, bound to the members of this object. */
     void
     declare_parameters(ParameterHandler &prm);

@@ -18,6 +18,15 @@ namespace coaxfit
   estimated_memory(std::size_t n_dofs, unsigned int degree);
 
   /**
+   * The memory (bytes) of a run of @p parameters with the direct solver:
+   * estimated_memory() of its DoFs and, for the staggered solver, the
+   * dense interface blocks of the bodies' factors, which grow with the
+   * square of the interface points.
+   */
+  double
+  estimated_memory_direct(const Parameters &parameters);
+
+  /**
    * The memory this process may still give to matrices (bytes): the
    * smaller of the system's available memory (/proc/meminfo, MemAvailable)
    * and what the address space limit (ulimit -v) leaves, each less what

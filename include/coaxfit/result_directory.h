@@ -1,6 +1,7 @@
 #ifndef coaxfit_result_directory_h
 #define coaxfit_result_directory_h
 
+#include <ostream>
 #include <set>
 #include <string>
 
@@ -68,10 +69,13 @@ namespace coaxfit
     /**
      * Flush every staged file to disk and put the staging directory in the
      * target's place; throws (with the previous result untouched) if that
-     * cannot be done.
+     * cannot be done. The @p console must have taken everything printed to
+     * it so far (it is flushed and checked first): a run whose report could
+     * not be shown ends with exit 3 and leaves the previous result as it
+     * was.
      */
     void
-    commit();
+    commit(std::ostream &console);
 
   private:
     /** Remove staging directories of dead runs into the same target. */

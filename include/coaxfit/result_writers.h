@@ -257,6 +257,16 @@ namespace coaxfit
   std::ofstream
   open_result_file(const std::string &filename);
 
+  /**
+   * Throw (exit 3, one line naming @p filename) unless every entry of
+   * @p values is finite and small enough for the single precision (float)
+   * arrays of VTK files, |v| < 1e30: a file that ParaView would show as inf
+   * or nan is not written.
+   */
+  void
+  check_values_for_output(const Vector<double> &values,
+                          const std::string    &filename);
+
   /** Close @p out and throw if anything written to it was lost. */
   void
   close_result_file(std::ofstream &out, const std::string &filename);

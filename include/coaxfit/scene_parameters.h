@@ -85,7 +85,7 @@ namespace coaxfit
     {
       return c == FitCase::min ? U_min :
              c == FitCase::max ? U_max :
-                                 0.5 * (U_min + U_max);
+                                 0.5 * U_min + 0.5 * U_max; // no overflow
     }
 
     /** The interference of the case in use, before smoothing. */

@@ -6,6 +6,7 @@
 #include <coaxfit/usage.h>
 
 #include <climits>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -27,6 +28,25 @@ namespace
     const std::string whole = path;
     return whole.substr(0, whole.find_last_of('/'));
   }
+
+  /**
+   * SIGINT, SIGTERM or SIGHUP while the program loads (about 0.3 s; before
+   * the program installs its own handlers, see interruption.h): the same
+   * line and exit code (128 + signal) as later, when nothing was staged.
+   * Nothing has been written yet. Only async-signal-safe calls.
+   */
+  extern "C" void
+  interrupted_while_loading(const int signal)
+  {
+    const char *text   = signal == SIGINT ? "coaxfit: interrupted by SIGINT\n" :
+                         signal == SIGTERM ? "coaxfit: interrupted by SIGTERM\n" :
+                                             "coaxfit: interrupted by SIGHUP\n";
+    std::size_t length = 0;
+    while (text[length] != '\0')
+      ++length;
+    (void)!::write(STDERR_FILENO, text, length);
+    ::_exit(128 + signal);
+  }
 } // namespace
 
 
@@ -44,6 +64,12 @@ main(int argc, char **argv)
         std::fputs("coaxfit: error: cannot write to standard output\n", stderr);
       return ok ? 0 : 3;
     }
+
+  struct sigaction action = {};
+  action.sa_handler       = interrupted_while_loading;
+  sigemptyset(&action.sa_mask);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP})
+    ::sigaction(signal, &action, nullptr);
 
   const std::string module = own_directory() + "/" COAXFIT_APP_MODULE;
   void             *handle = ::dlopen(module.c_str(), RTLD_LAZY | RTLD_LOCAL);

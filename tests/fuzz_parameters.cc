@@ -8,7 +8,7 @@
 // "coaxfit: error:" message and exit 1 and no output directory: never a crash
 // (signal, exit 3), a hang or a multi-line error. Release only
 // (fuzz_parameters.release.output): the 80 runs are mostly process start-up,
-// and the paths they reach run in Debug in bad_input.
+// and the paths they reach are those of bad_input.
 
 #include "run_executable.h"
 

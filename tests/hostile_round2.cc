@@ -17,6 +17,7 @@
 // 8. include of a directory or a device, a device as the parameter file, a
 //    parameter file above 16 MiB: exit 1, one line.
 // 9. nu = 0.4999999 with FE_Q(1) and full integration: a locking warning.
+// AMG on a thin tube it cannot serve: exit 2 within seconds, one line.
 // Minor: contact states touching and tension, a sweep over Fit/Case on a
 // file with Case = all, the output directory of a .json file, a huge
 // interference named as given, a joining temperature above 350 C flagged.
@@ -323,6 +324,17 @@ main()
   std::cout << "nu = 0.4999999, FE_Q(1), full integration: lines warning of "
                "locking "
             << r.message;
+
+  // AMG on a mesh it cannot serve: stops within its iteration bound with
+  // exit 2 and a line naming the solver (it used to iterate for minutes
+  // and end with exit 3).
+  r = shell(exe
+            + " --quiet --set 'Solver/Linear solver=amg' --set "
+              "'Mesh/Global refinements=1' --set Output/Directory=runs/amg "
+            + source_dir + "/prm/variant_17.prm");
+  report("variant 17, refinement 1, amg", r, 6);
+  std::cout << "  output written: " << (fs::exists("runs/amg") ? "YES" : "no")
+            << '\n';
 
   // Minor.
   for (const auto &[label, settings] : std::map<std::string, std::string>{

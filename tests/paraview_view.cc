@@ -8,8 +8,12 @@
 //   (before, the shaft lacked its oversize d and a false gap of d showed);
 // - variant 14 (coarse), whose tube separates at its ends: the warped
 //   surfaces meet where in contact and open by the gap where separated;
-// - tools/paraview/view.py draws both pictures (PNG signature, size, and
-//   enough bytes to hold a drawing, not an empty frame).
+// - tools/paraview/view.py draws its pictures (PNG signature, size, and
+//   enough bytes to hold a drawing, not an empty frame): the section, the
+//   3D part, the chart of contact pressure and gap along the joint and the
+//   close-up of the separated zone; and refuses a field the bodies do not
+//   have, naming the ones they have.
+// Without pvpython or xvfb-run the test fails (it does not skip).
 
 #include "run_executable.h"
 
@@ -77,11 +81,16 @@ namespace
 int
 main()
 {
-  if (coaxfit_test::run_command("command -v pvpython").exit_code != 0)
-    {
-      std::cout << "pvpython not found: install Debian's paraview\n";
-      return 1;
-    }
+  for (const std::string tool : {"pvpython", "xvfb-run"})
+    if (coaxfit_test::run_command("command -v " + tool + " >/dev/null")
+          .exit_code
+        != 0)
+      {
+        std::cout << tool
+                  << " not found: install Debian's paraview, xvfb and xauth "
+                     "(.ci/packages)\n";
+        return 1;
+      }
   const std::string settings = "--set 'Output/Print timing=false'";
   if (run_case("lame", "tests/lame_run.prm", settings))
     check("lame", "LAME");
@@ -93,14 +102,28 @@ main()
       std::filesystem::remove_all("views");
       // view.py starts its own virtual display when there is none; its
       // log (kept in view.log) shows in the output only if it fails.
+      const std::string view
+        = "timeout 300 pvpython " + source_dir + "/tools/paraview/view.py ";
       const coaxfit_test::RunResult r = coaxfit_test::run_command(
-        "timeout 300 pvpython " + source_dir
-        + "/tools/paraview/view.py separating --png-dir views > view.log "
-          "2>&1");
+        view + "separating --png-dir views > view.log 2>&1");
       std::cout << "view.py: exit code " << r.exit_code << '\n';
       if (r.exit_code != 0)
         std::cout << coaxfit_test::run_command("tail -5 view.log").message;
-      for (const std::string name : {"section.png", "part_3d.png"})
+      std::cout << "contact_chart.png written: "
+                << (std::filesystem::exists("views/contact_chart.png") ? "yes" :
+                                                                         "NO")
+                << '\n';
+      for (const std::string name : {"section.png",
+                                     "part_3d.png",
+                                     "contact_chart.png",
+                                     "separation_zoom.png"})
         describe_png("views/" + name);
+
+      // A field the bodies do not have: exit code 1, the allowed ones named.
+      const coaxfit_test::RunResult wrong = coaxfit_test::run_command(
+        view + "separating --field sigma_xx_MPa --no-png 2>&1 >/dev/null");
+      std::cout << "view.py --field sigma_xx_MPa: exit code " << wrong.exit_code
+                << '\n'
+                << wrong.message;
     }
 }

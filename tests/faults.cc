@@ -81,16 +81,6 @@ namespace
            + " $p; wait $p; exit $?; :";
   }
 
-  /** The first words of a message: what it says, without paths. */
-  std::string
-  gist(const std::string &message, const std::size_t words)
-  {
-    std::istringstream in(message);
-    std::string        word, out;
-    for (std::size_t i = 0; i < words && in >> word; ++i)
-      out += (i ? " " : "") + word;
-    return out;
-  }
 
   /**
    * Run a fault into @p directory, which holds an earlier result, and
@@ -108,7 +98,7 @@ namespace
       = run_shell(prefix,
                   "--set Output/Directory=" + directory + " " + arguments);
     std::cout << label << ": exit code " << r.exit_code << ", " << r.lines
-              << " line(s): " << gist(r.message, words) << '\n'
+              << " line(s): " << coaxfit_test::gist(r.message, words) << '\n'
               << "  earlier results (" << before.size() << " files) "
               << (snapshot(directory) == before ? "untouched" : "CHANGED")
               << ", staging directories left: " << n_staging_left() << '\n';
@@ -176,7 +166,8 @@ main()
                 "--set Output/Directory=/proc/coaxfit_faults " + small
                   + case_file);
   std::cout << "unwritable directory: exit code " << r.exit_code << ", "
-            << r.lines << " line(s): " << gist(r.message, 5) << '\n';
+            << r.lines << " line(s): " << coaxfit_test::gist(r.message, 5)
+            << '\n';
 
   // Two runs into one directory at once: one complete set, from either.
   r = run_shell("",

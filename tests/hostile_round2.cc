@@ -73,16 +73,6 @@ namespace
     return coaxfit_test::run_command("timeout 120 bash command.sh 2>&1");
   }
 
-  /** The first @p words words of @p message (no paths, no numbers after). */
-  std::string
-  gist(const std::string &message, const std::size_t words)
-  {
-    std::istringstream in(message);
-    std::string        word, out;
-    for (std::size_t i = 0; i < words && in >> word; ++i)
-      out += (i ? " " : "") + word;
-    return out;
-  }
 
   /** Whether @p text contains @p part. */
   bool
@@ -97,7 +87,7 @@ namespace
          const std::size_t              words)
   {
     std::cout << label << ": exit code " << r.exit_code << ", " << r.lines
-              << " line(s): " << gist(r.message, words) << '\n';
+              << " line(s): " << coaxfit_test::gist(r.message, words) << '\n';
   }
 
   /** A parameter file including prm/default.prm with @p settings. */

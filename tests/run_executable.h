@@ -4,6 +4,7 @@
 #define coaxfit_tests_run_executable_h
 
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -53,6 +54,20 @@ namespace coaxfit_test
     return run_command("timeout 60 " + std::string(coaxfit_executable)
                        + " --set Output/Directory=" + directory + " "
                        + arguments + " 2>&1 >/dev/null");
+  }
+
+  /**
+   * The first @p words words of @p message: what a message says, without
+   * the paths and numbers that follow.
+   */
+  inline std::string
+  gist(const std::string &message, const std::size_t words)
+  {
+    std::istringstream in(message);
+    std::string        word, out;
+    for (std::size_t i = 0; i < words && in >> word; ++i)
+      out += (i ? " " : "") + word;
+    return out;
   }
 } // namespace coaxfit_test
 

@@ -13,8 +13,8 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <coaxfit/coaxial_fit.h>
-#include <coaxfit/input_error.h>
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/base/input_error.h>
 
 #include <algorithm>
 #include <cmath>

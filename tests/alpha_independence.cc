@@ -3,7 +3,7 @@
 // two convergent constant alphas gives the same contact pressure at every
 // interface point to the coupling tolerance.
 
-#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/app/coaxial_fit.h>
 
 #include <iomanip>
 #include <iostream>

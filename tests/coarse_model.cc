@@ -23,9 +23,9 @@
 //    FE_Q(3) (no coarse model: its points do not nest) and a hub 1e4
 //    times softer than the shaft; steps and active-set changes printed.
 
-#include <coaxfit/coarse_interface_model.h>
-#include <coaxfit/coaxial_fit.h>
-#include <coaxfit/staggered_coupling.h>
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/coupling/coarse_interface_model.h>
+#include <coaxfit/coupling/staggered_coupling.h>
 
 #include "coupled_cases.h"
 

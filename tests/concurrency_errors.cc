@@ -4,8 +4,8 @@
 // whatever the order in which they fail. Each case prints what reached the
 // caller and whether both jobs ran to their end.
 
-#include <coaxfit/concurrency.h>
-#include <coaxfit/input_error.h>
+#include <coaxfit/base/concurrency.h>
+#include <coaxfit/base/input_error.h>
 
 #include <atomic>
 #include <chrono>

@@ -7,7 +7,7 @@
 // (variant 5, fixed alpha) and a separating thin tube with IQN-ILS (variant
 // 17).
 
-#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/app/coaxial_fit.h>
 
 #include "coupled_cases.h"
 

@@ -7,8 +7,8 @@
 // Lame case, whose interface problem is linear and nearly uniform, needs few
 // steps.
 
-#include <coaxfit/coaxial_fit.h>
-#include <coaxfit/input_error.h>
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/base/input_error.h>
 
 #include "coupled_cases.h"
 

@@ -3,7 +3,7 @@
 #ifndef coaxfit_tests_coupled_cases_h
 #define coaxfit_tests_coupled_cases_h
 
-#include <coaxfit/parameters.h>
+#include <coaxfit/parameters/parameters.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // interface point (relative error far below 1e-3 on the default mesh), for
 // the paper's material and for two different materials.
 
-#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/app/coaxial_fit.h>
 
 #include <iomanip>
 #include <iostream>

@@ -12,7 +12,7 @@
 // F = p pi D_F l_F mu are checked on the same cases; relative differences
 // must be at round-off.
 
-#include <coaxfit/din7190.h>
+#include <coaxfit/design/din7190.h>
 
 #include <cmath>
 #include <iomanip>

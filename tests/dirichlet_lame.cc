@@ -6,7 +6,7 @@
 // The pressure at each point is the nodal reaction over its lumped weight.
 // Hollow: converges with the mesh; solid: exact (linear field).
 
-#include <coaxfit/lame.h>
+#include <coaxfit/fe/lame.h>
 
 #include "test_bodies.h"
 

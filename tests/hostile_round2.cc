@@ -24,9 +24,9 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <coaxfit/parameters.h>
-#include <coaxfit/resources.h>
-#include <coaxfit/result_writers.h>
+#include <coaxfit/app/resources.h>
+#include <coaxfit/io/result_writers.h>
+#include <coaxfit/parameters/parameters.h>
 
 #include "run_executable.h"
 

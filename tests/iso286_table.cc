@@ -6,7 +6,7 @@
 // above 10 mm and letters that start above a diameter (t, v, y). The
 // interference limits follow as U_min = ei - ES and U_max = es - EI.
 
-#include <coaxfit/iso286.h>
+#include <coaxfit/parameters/iso286.h>
 
 #include <iostream>
 #include <string>

@@ -5,7 +5,7 @@
 // r-weighted L2 norm it must fall as h^(p+1) for the displacement and h^p
 // for the hoop stress.
 
-#include <coaxfit/lame.h>
+#include <coaxfit/fe/lame.h>
 
 #include "test_bodies.h"
 

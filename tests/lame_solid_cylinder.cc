@@ -6,7 +6,7 @@
 // condition u_r = 0 and the consistent surface load), for several
 // materials including a nearly incompressible one.
 
-#include <coaxfit/lame.h>
+#include <coaxfit/fe/lame.h>
 
 #include "test_bodies.h"
 

@@ -4,7 +4,7 @@
 // to its maximum, and the same separated points, for a full-contact case
 // (variant 5) and a separating thin tube (variant 17), paper's coarse mesh.
 
-#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/app/coaxial_fit.h>
 
 #include "coupled_cases.h"
 

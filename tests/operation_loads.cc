@@ -27,8 +27,8 @@
 // 6. A clearance (U = -0.1 mm): no contact at rest, exit as a converged
 //    answer; the same clearance closed by heating the shaft.
 
-#include <coaxfit/coaxial_fit.h>
-#include <coaxfit/operation_analysis.h>
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/design/operation_analysis.h>
 
 #include <cmath>
 #include <iomanip>

@@ -7,8 +7,8 @@
 // grading
 // ratio 2 with refinement, and linearity in the interference d.
 
-#include <coaxfit/coaxial_fit.h>
-#include <coaxfit/input_error.h>
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/base/input_error.h>
 
 #include <iomanip>
 #include <iostream>

@@ -4,9 +4,9 @@
 #ifndef coaxfit_tests_test_bodies_h
 #define coaxfit_tests_test_bodies_h
 
-#include <coaxfit/body_discretization.h>
-#include <coaxfit/body_solver.h>
-#include <coaxfit/lame.h>
+#include <coaxfit/fe/body_discretization.h>
+#include <coaxfit/fe/lame.h>
+#include <coaxfit/solvers/body_solver.h>
 
 #include <cmath>
 #include <iomanip>

@@ -6,7 +6,7 @@
 // pressure on an open gap. The separated zone must not depend on the
 // controller or the first alpha.
 
-#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/app/coaxial_fit.h>
 
 #include "coupled_cases.h"
 

@@ -2,7 +2,7 @@
 // the unilateral pass: the same pressures as the bilateral solution, no
 // separated point, no active set change, no extra factorization.
 
-#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/app/coaxial_fit.h>
 
 #include <iostream>
 

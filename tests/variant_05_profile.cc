@@ -4,7 +4,7 @@
 // CalculiX solution (shared/reference: p(0) = 183.82 MPa, mean over
 // 0 <= z <= 100 mm 191.55 MPa, p(99 mm) = 322.3 MPa) within 1 %.
 
-#include <coaxfit/coaxial_fit.h>
+#include <coaxfit/app/coaxial_fit.h>
 
 #include <iomanip>
 #include <iostream>

@@ -1,0 +1,70 @@
+#ifndef coaxfit_fit_case_study_h
+#define coaxfit_fit_case_study_h
+
+#include <coaxfit/parameters/parameters.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * `Fit/Case = all`: the smallest, mean and largest interference of the
+   * ISO fit in one run. Each case is a complete CoaxialFit run into the
+   * subdirectory min, mean or max of the output directory; fit_cases.csv
+   * and the console get one table of the design figures of the three. The
+   * output directory is staged and replaced as a whole, as for one case.
+   */
+  class FitCaseStudy
+  {
+  public:
+    FitCaseStudy(const Parameters &parameters,
+                 std::ostream     &out     = std::cout,
+                 bool              verbose = true);
+
+    /**
+     * Run the three cases; true if all converged (the others are written,
+     * marked not converged). Throws as CoaxialFit::run() does, with the
+     * earlier results untouched.
+     */
+    bool
+    run();
+
+    /** The names of the entries a study writes into its directory. */
+    static std::vector<std::string>
+    file_names();
+
+    /** One line of the table. */
+    struct Row
+    {
+      FitCase             fit_case;
+      bool                converged;
+      unsigned int        steps;
+      std::vector<double> values; ///< in the order of column_names()
+    };
+
+    /** The names (with units) of the figures of a Row. */
+    static std::vector<std::string>
+    column_names();
+
+    /** The table of the cases (after run()). */
+    const std::vector<Row> &
+    get_rows() const
+    {
+      return rows;
+    }
+
+  private:
+    /** Write fit_cases.csv into @p directory and print the table. */
+    void
+    output_results(const std::string &directory) const;
+
+    const Parameters parameters;
+    std::ostream    &out;
+    const bool       verbose;
+    std::vector<Row> rows;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,79 @@
+#ifndef coaxfit_monolithic_solver_h
+#define coaxfit_monolithic_solver_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <coaxfit/coupling/contact_interface.h>
+#include <coaxfit/coupling/interface_solver.h>
+#include <coaxfit/fe/body_discretization.h>
+#include <coaxfit/solvers/sparse_cholesky.h>
+
+namespace coaxfit
+{
+  /**
+   * The reference for the staggered method: both bodies in one linear
+   * system. Shaft and hub DoFs are numbered one after the other; at every
+   * interface point in contact the hub's u_r is tied to the shaft's,
+   * u2 = u1 + d, an inhomogeneous AffineConstraints line that condenses
+   * the hub's DoF there away, so the system is solved for both bodies at once
+   * by one sparse Cholesky factorization (CHOLMOD). The sparsity pattern is
+   * built once with every point tied (a superset of the pattern of any active
+   * set) and analyzed once; each active set then costs one numeric
+   * factorization.
+   *
+   * Unilateral contact is handled by a primal-dual active set loop (as in
+   * deal.II's step-41): after each solve, a tied point whose contact force
+   * is tensile is released, a released point that penetrates is tied again;
+   * the loop ends when the set does not change. Each loop step is one row
+   * of the history (kind "Neumann" is not meaningful here; steps are
+   * monolithic solves).
+   */
+  class MonolithicSolver : public InterfaceSolver
+  {
+  public:
+    MonolithicSolver(const BodyDiscretization  &shaft,
+                     const BodyDiscretization  &hub,
+                     const ContactInterface    &interface,
+                     const UnilateralActiveSet &active_set,
+                     unsigned int               max_steps);
+
+    bool
+    run(std::ostream *progress) override;
+
+    /** The fields of the last coupled solve. */
+    std::pair<Vector<double>, Vector<double>>
+    solve_fields() override;
+
+    SolverStatistics
+    statistics() const override;
+
+  private:
+    /** Solve the coupled system with the current set of tied points. */
+    void
+    solve_tied();
+
+    /** The pattern of the coupled matrix with every point tied, analyzed. */
+    void
+    setup_pattern();
+
+    /**
+     * The tie of the coupled numbering (shaft DoFs, then hub DoFs): at every
+     * tied point the hub's interface DoF is constrained to the shaft's plus
+     * the interference, u2 = u1 + d.
+     */
+    AffineConstraints<double>
+    tie_constraints(const std::vector<bool> &tied) const;
+
+    const BodyDiscretization &shaft;
+    const BodyDiscretization &hub;
+    Vector<double>            shaft_field, hub_field;
+    const ContactInterface   &interface;
+    const unsigned int        max_steps;
+    unsigned int              factorizations = 0;
+    SparsityPattern           pattern;
+    SparseCholesky            cholesky;
+  };
+} // namespace coaxfit
+
+#endif

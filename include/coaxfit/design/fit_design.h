@@ -1,0 +1,102 @@
+#ifndef coaxfit_fit_design_h
+#define coaxfit_fit_design_h
+
+#include <deal.II/lac/vector.h>
+
+#include <coaxfit/design/din7190.h>
+#include <coaxfit/fe/body_discretization.h>
+#include <coaxfit/fe/body_stress.h>
+#include <coaxfit/parameters/parameters.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * The design figures of a finished run next to DIN 7190's: capacity
+   * (torque, axial force, press-in force, safety against slip) from the
+   * finite element contact force and from the Lame pressure, and strength
+   * (stresses at DIN 7190's check points at the mid-plane, maxima along the
+   * hub bore and the shaft surface at least Design/Edge distance away from
+   * the singular end of the joint, safety against yield). Units: MPa, N,
+   * N m, mm. A figure that cannot be given (no required load, no yield
+   * strength) is NaN, written as null.
+   *
+   * The finite element normal force over the joint is 4 pi sum_i F_i (both
+   * halves of the section, the full circumference; F_i are the nodal contact
+   * forces per radian of the modelled half), the torque capacity mu R_F
+   * times it, the axial capacity mu times it.
+   */
+  class FitDesign
+  {
+  public:
+    static constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+
+    /** Stresses at one check point: FE at the mid-plane, and DIN 7190. */
+    struct CheckPoint
+    {
+      std::string         name; ///< e.g. "hub bore"
+      StressState         fe;
+      Din7190::CheckPoint din;
+    };
+
+    /** The stress maximum along one surface away from the corner. */
+    struct SurfaceMaximum
+    {
+      std::string name;
+      double      von_mises = 0., z = 0.;
+      double      corner = 0.; ///< von Mises at the corner (singular)
+      /** The corner value one refinement coarser (NaN: not computed). */
+      double corner_coarser = std::numeric_limits<double>::quiet_NaN();
+    };
+
+    FitDesign(const Parameters         &parameters,
+              const BodyDiscretization &shaft,
+              const Vector<double>     &shaft_field,
+              const BodyDiscretization &hub,
+              const Vector<double>     &hub_field,
+              const Vector<double>     &contact_force);
+
+    /** Normal force over the whole joint (N), FE. */
+    double normal_force;
+    /** Mean FE pressure over the nominal joint area pi D_F l_F (MPa). */
+    double mean_pressure;
+    double pressure_din;
+    double torque_capacity, torque_capacity_din;           ///< N m
+    double axial_force_capacity, axial_force_capacity_din; ///< N
+    double press_in_force, press_in_force_din;             ///< N
+    double safety_slip, safety_slip_din;
+    double safety_yield_shaft, safety_yield_shaft_din;
+    double safety_yield_hub, safety_yield_hub_din;
+    double edge_distance; ///< mm, in use
+
+    /** hub bore, hub outer surface, shaft surface, shaft bore or axis. */
+    std::vector<CheckPoint> check_points;
+
+    /** Along the hub bore and along the shaft surface. */
+    std::vector<SurfaceMaximum> surface_maxima;
+
+    /** The stresses along the hub bore and the shaft surface, by z. */
+    std::vector<StressState> hub_bore_stresses, shaft_surface_stresses;
+
+    /** Warnings (yield exceeded, slip), one line each. */
+    std::vector<std::string>
+    warnings(const Parameters &parameters) const;
+
+  private:
+    void
+    compute_capacity(const Parameters &parameters, const Din7190 &din);
+
+    void
+    compute_strength(const Parameters         &parameters,
+                     const Din7190            &din,
+                     const BodyDiscretization &shaft,
+                     const Vector<double>     &shaft_field,
+                     const BodyDiscretization &hub,
+                     const Vector<double>     &hub_field);
+  };
+} // namespace coaxfit
+
+#endif

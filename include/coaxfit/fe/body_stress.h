@@ -1,0 +1,64 @@
+#ifndef coaxfit_body_stress_h
+#define coaxfit_body_stress_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/lac/vector.h>
+
+#include <coaxfit/fe/axisymmetric.h>
+#include <coaxfit/fe/body_discretization.h>
+
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * The stress at one point of a body (MPa): sigma_rr, sigma_zz, sigma_tt
+   * (hoop) and sigma_rz, with the equivalent stresses of the strength
+   * checks.
+   */
+  struct StressState
+  {
+    double                z = 0.; ///< axial position (mm)
+    Axisymmetric::Vector4 sigma{{0., 0., 0., 0.}};
+
+    double
+    radial() const
+    {
+      return sigma[0];
+    }
+
+    double
+    hoop() const
+    {
+      return sigma[2];
+    }
+
+    /** Von Mises of the full axisymmetric state. */
+    double
+    von_mises() const
+    {
+      return Axisymmetric::von_mises(sigma);
+    }
+  };
+
+  /**
+   * The stress of @p solution at @p point of @p body, from the cell that
+   * contains it (on a cell boundary: one of them).
+   */
+  StressState
+  stress_at(const BodyDiscretization &body,
+            const Vector<double>     &solution,
+            const Point<2>           &point);
+
+  /**
+   * The stresses of @p solution at the support points of the boundary faces
+   * of @p body at the radius @p r (a surface r = const), ordered by z; the
+   * values of the two cells at a shared vertex are averaged.
+   */
+  std::vector<StressState>
+  stresses_along_radius(const BodyDiscretization &body,
+                        const Vector<double>     &solution,
+                        double                    r);
+} // namespace coaxfit
+
+#endif

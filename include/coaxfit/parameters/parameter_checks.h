@@ -1,0 +1,42 @@
+#ifndef coaxfit_parameter_checks_h
+#define coaxfit_parameter_checks_h
+
+#include <coaxfit/base/input_error.h>
+
+#include <sstream>
+#include <string>
+
+namespace coaxfit
+{
+  /**
+   * Throw InputError "parameter NAME = VALUE is out of range: allowed is
+   * RANGE." unless @p condition holds.
+   */
+  inline void
+  require(const bool         condition,
+          const std::string &name,
+          const double       value,
+          const std::string &range)
+  {
+    if (!condition)
+      {
+        std::ostringstream msg;
+        msg.precision(15);
+        msg << "parameter " << name << " = " << value
+            << " is out of range: allowed is " << range << '.';
+        throw InputError(msg.str());
+      }
+  }
+
+  /** @p x with 10 significant digits, for messages. */
+  inline std::string
+  number(const double x)
+  {
+    std::ostringstream s;
+    s.precision(10);
+    s << x;
+    return s.str();
+  }
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,768 @@
+#include <deal.II/base/multithread_info.h>
+
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/app/resources.h>
+#include <coaxfit/base/blas_threads.h>
+#include <coaxfit/base/concurrency.h>
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/base/mpi_session.h>
+#include <coaxfit/coupling/monolithic_solver.h>
+#include <coaxfit/coupling/staggered_coupling.h>
+#include <coaxfit/design/design_report.h>
+#include <coaxfit/design/operation_analysis.h>
+#include <coaxfit/io/result_directory.h>
+#include <coaxfit/io/result_writers.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <optional>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    BodyGeometry
+    common_mesh_settings(const Parameters &parameters)
+    {
+      BodyGeometry g;
+      g.contact_length     = parameters.geometry.contact_length();
+      g.axial_cells        = parameters.mesh.axial_cells;
+      g.radial_cells       = parameters.mesh.radial_cells;
+      g.grading_ratio      = parameters.mesh.grading_ratio;
+      g.global_refinements = parameters.mesh.global_refinements;
+      return g;
+    }
+  } // namespace
+
+
+
+  BodyGeometry
+  shaft_geometry(const Parameters &parameters)
+  {
+    BodyGeometry g            = common_mesh_settings(parameters);
+    g.r_inner                 = parameters.geometry.R0;
+    g.r_outer                 = parameters.geometry.R1;
+    g.length                  = parameters.geometry.L1;
+    g.contact_at_outer_radius = true;
+    return g;
+  }
+
+
+
+  BodyGeometry
+  hub_geometry(const Parameters &parameters)
+  {
+    BodyGeometry g            = common_mesh_settings(parameters);
+    g.r_inner                 = parameters.geometry.R1;
+    g.r_outer                 = parameters.geometry.R2;
+    g.length                  = parameters.geometry.L2;
+    g.contact_at_outer_radius = false;
+    return g;
+  }
+
+
+
+  BodyLoad
+  body_load(const Parameters &parameters, const bool shaft)
+  {
+    const OperationParameters &o = parameters.operation;
+    const Material            &m = shaft ? parameters.shaft : parameters.hub;
+    BodyLoad                   load;
+    load.thermal_strain
+      = m.thermal_expansion
+        * ((shaft ? o.shaft_temperature() : o.hub_temperature())
+           - o.assembly_temperature);
+    load.omega_squared = o.omega() * o.omega();
+    if (shaft)
+      load.inner_pressure = o.shaft_bore_pressure;
+    else
+      load.outer_pressure = o.hub_outer_pressure;
+    return load;
+  }
+
+
+
+  std::unique_ptr<BodyDiscretization>
+  make_body(const Parameters &parameters, const bool shaft)
+  {
+    return std::make_unique<BodyDiscretization>(
+      shaft ? shaft_geometry(parameters) : hub_geometry(parameters),
+      shaft ? parameters.shaft : parameters.hub,
+      parameters.mesh.degree,
+      parameters.mesh.reduced_volumetric_integration(),
+      body_load(parameters, shaft));
+  }
+
+
+
+  CoaxialFit::CoaxialFit(const Parameters &parameters,
+                         std::ostream     &out,
+                         const bool        verbose)
+    : parameters(parameters)
+    , out(out)
+    , pcout(out, verbose)
+    , shaft(make_body(parameters, true))
+    , hub(make_body(parameters, false))
+    , timer(out, TimerOutput::never, TimerOutput::wall_times)
+  {}
+
+
+
+  void
+  CoaxialFit::setup_system()
+  {
+    {
+      TimerOutput::Scope scope(timer, "setup");
+      shaft->setup_system();
+      hub->setup_system();
+      shaft->assemble_system();
+      hub->assemble_system();
+      amg_solver = use_amg(parameters);
+      if (amg_solver)
+        ensure_mpi_initialized();
+      shaft_solver = std::make_unique<BodySolver>(*shaft, amg_solver);
+      hub_solver   = std::make_unique<BodySolver>(*hub, amg_solver);
+    }
+
+    // The free body's factorization is needed by every staggered run (the
+    // Neumann answer, the compliance of the condensed operator, the final
+    // fields), so both bodies make it now, concurrently. Factorizations
+    // with prescribed points are made when the coupling first asks for
+    // them (the condensed operator never does). The monolithic solver
+    // factorizes its own system.
+    if (parameters.solver.method != SolverMethod::monolithic)
+      {
+        set_blas_threads(1);
+        TimerOutput::Scope      scope(timer, "factorization");
+        const std::vector<bool> none(shaft->n_interface_points(), false);
+        concurrently([&]() { shaft_solver->factorize(none); },
+                     [&]() { hub_solver->factorize(none); });
+      }
+    setup_loads();
+    if (parameters.solver.method == SolverMethod::monolithic)
+      set_blas_threads(MultithreadInfo::n_threads());
+    is_set_up = true;
+  }
+
+
+
+  void
+  CoaxialFit::setup_loads()
+  {
+    // Each body's own answer to its loads of operation with a free contact
+    // surface (one solve with the free body's factorization); the coupling
+    // then sees the interference they leave at each point.
+    const unsigned int n = shaft->n_interface_points();
+    shaft_load_field.reinit(shaft->n_dofs());
+    hub_load_field.reinit(hub->n_dofs());
+    if (shaft->load().any() || hub->load().any())
+      {
+        TimerOutput::Scope scope(timer, "loads");
+        set_blas_threads(1);
+        concurrently(
+          [&]() {
+            shaft_load_field = shaft_solver->solve_load_field(
+              shaft->assemble_load_vector(shaft->load()));
+          },
+          [&]() {
+            hub_load_field = hub_solver->solve_load_field(
+              hub->assemble_load_vector(hub->load()));
+          });
+      }
+    Vector<double> u1(n), u2(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        u1[i] = shaft_load_field[shaft->get_interface_dofs()[i]];
+        u2[i] = hub_load_field[hub->get_interface_dofs()[i]];
+      }
+    interface = std::make_unique<ContactInterface>(
+      *shaft, *hub, parameters.geometry.d, u1, u2);
+  }
+
+
+
+  std::unique_ptr<InterfaceSolver>
+  CoaxialFit::make_solver(const ContactInterface &contact,
+                          const bool              unilateral,
+                          const bool              start_from_coarse)
+  {
+    if (parameters.solver.method == SolverMethod::monolithic)
+      return std::make_unique<MonolithicSolver>(
+        *shaft,
+        *hub,
+        contact,
+        UnilateralActiveSet(contact.n_points(),
+                            unilateral,
+                            UnilateralActiveSet::Update::when_converged),
+        parameters.coupling.max_steps);
+
+    InterfaceOperator *shaft_operator = shaft_solver.get();
+    InterfaceOperator *hub_operator   = hub_solver.get();
+    if (use_condensed_operator())
+      {
+        condense();
+        shaft_operator = condensed_shaft.get();
+        hub_operator   = condensed_hub.get();
+      }
+    // Timed on its own for the main solve only: the analysis of operation
+    // times its solvers as a whole.
+    std::optional<TimerOutput::Scope> scope;
+    if (start_from_coarse && wants_coarse_model())
+      scope.emplace(timer, "coarse_case");
+    std::unique_ptr<CoarseInterfaceModel> model
+      = wants_coarse_model() ? make_coarse_model(contact) : nullptr;
+    // The auto controller: ibqn with a coarse model, iqn-ils without.
+    CouplingParameters coupling = parameters.coupling;
+    coupling.acceleration       = coupling.accelerator(model != nullptr);
+    // ibqn's models are dense (n^2 numbers per body, O(n^3) per step).
+    if (coupling.acceleration == AcceleratorType::ibqn
+        && contact.n_points() > max_condensed_points)
+      throw InputError(
+        "Coupling/Alpha controller (or Coupling/Accelerator) = ibqn keeps "
+        "dense models of the bodies' interface compliances and allows at "
+        "most "
+        + std::to_string(max_condensed_points)
+        + " interface points; this mesh has "
+        + std::to_string(contact.n_points())
+        + ". Use auto (iqn-ils there) or iqn-ils.");
+    auto staggered = std::make_unique<StaggeredCoupling>(
+      *shaft_solver,
+      *hub_solver,
+      *shaft_operator,
+      *hub_operator,
+      contact,
+      coupling,
+      UnilateralActiveSet(contact.n_points(), unilateral, active_set_mode()),
+      parameters.contact.active_set_tolerance);
+    if (model)
+      {
+        if (start_from_coarse)
+          start_from_coarse_solution(*staggered, *model);
+        staggered->use_coarse_model(std::move(model));
+      }
+    return staggered;
+  }
+
+
+
+  void
+  CoaxialFit::condense()
+  {
+    if (!condensed_shaft)
+      {
+        TimerOutput::Scope scope(timer, "condensation");
+        concurrently(
+          [&]() {
+            condensed_shaft = std::make_unique<CondensedBody>(*shaft_solver);
+          },
+          [&]() {
+            condensed_hub = std::make_unique<CondensedBody>(*hub_solver);
+          });
+      }
+  }
+
+
+
+  std::array<ShortWaveCompliance, 2>
+  CoaxialFit::short_wave_compliances() const
+  {
+    const GeometryParameters &g = parameters.geometry;
+    return {{{parameters.shaft.E,
+              parameters.shaft.nu,
+              g.R1,
+              g.R0 > 0. ? g.R1 - g.R0 : 0.},
+             {parameters.hub.E, parameters.hub.nu, g.R1, g.R2 - g.R1}}};
+  }
+
+
+
+  void
+  CoaxialFit::start_from_coarse_solution(StaggeredCoupling          &staggered,
+                                         const CoarseInterfaceModel &model)
+  {
+    coarse_twin->reuse_for(coarser_parameters());
+    twin_state = TwinState::failed;
+    try
+      {
+        coarse_twin->solve(nullptr);
+      }
+    catch (const SolverError &)
+      {
+        return; // the fine run starts as without a coarse mesh
+      }
+    twin_state                    = TwinState::solved;
+    const InterfaceSolver &coarse = *coarse_twin->coupling;
+    if (!coarse.converged())
+      return;
+    staggered.start_from(model.prolongate(coarse.contact_force()),
+                         model.prolongate(coarse.get_active_set().in_contact()),
+                         coarse.history().size());
+  }
+
+
+
+  bool
+  CoaxialFit::wants_coarse_model() const
+  {
+    return parameters.coupling.coarse_model
+           && (parameters.coupling.accelerator() == AcceleratorType::iqn_ils
+               || parameters.coupling.accelerator() == AcceleratorType::ibqn)
+           && parameters.solver.method != SolverMethod::monolithic
+           && parameters.mesh.global_refinements > 0 && !amg_solver;
+  }
+
+
+
+  std::unique_ptr<CoarseInterfaceModel>
+  CoaxialFit::make_coarse_model(const ContactInterface &contact)
+  {
+    set_up_coarse_twin();
+    // The prior is dense on the fine interface (n^2 numbers, O(n^2) per
+    // step), and the coarse points must be fine points (not so for FE_Q(3)
+    // and higher, whose refined support points do not nest).
+    if (coarse_twin->interface->n_points() > max_condensed_points
+        || contact.n_points() > max_condensed_points
+        || !CoarseInterfaceModel::nested(*coarse_twin->interface, contact))
+      return nullptr;
+    coarse_twin->condense();
+    return std::make_unique<CoarseInterfaceModel>(*coarse_twin->condensed_shaft,
+                                                  *coarse_twin->condensed_hub,
+                                                  *coarse_twin->interface,
+                                                  contact,
+                                                  short_wave_compliances(),
+                                                  parameters.mesh.degree);
+  }
+
+
+
+  bool
+  CoaxialFit::solve(std::ostream *progress)
+  {
+    coupling = make_solver(*interface, parameters.contact.unilateral, true);
+    TimerOutput::Scope scope(timer, "coupling");
+    const bool         converged     = coupling->run(progress);
+    std::tie(shaft_field, hub_field) = coupling->solve_fields();
+    // The contact answer plus each body's answer to its own loads.
+    shaft_field += shaft_load_field;
+    hub_field += hub_load_field;
+    // The work of this state, before the analysis of operation adds more.
+    statistics = coupling->statistics();
+    if (amg_solver)
+      {
+        statistics.linear_solver = "amg";
+        statistics.solves["shaft_cg_iterations"]
+          = shaft_solver->n_cg_iterations();
+        statistics.solves["hub_cg_iterations"] = hub_solver->n_cg_iterations();
+      }
+    return converged;
+  }
+
+
+
+  Vector<double>
+  CoaxialFit::contact_force_for(const Vector<double> &interference,
+                                const bool            unilateral)
+  {
+    const Vector<double>   zero(interference.size());
+    const ContactInterface contact(*shaft, *hub, 0., interference, zero);
+    const auto             solver = make_solver(contact, unilateral);
+    if (!solver->run(nullptr))
+      throw SolverError("a solve of the operating analysis did not converge "
+                        "within Coupling/Max steps = "
+                        + std::to_string(parameters.coupling.max_steps));
+    return solver->contact_force();
+  }
+
+
+
+  Vector<double>
+  CoaxialFit::interference_change(const BodyLoad &shaft_load,
+                                  const BodyLoad &hub_load)
+  {
+    Vector<double> u1, u2;
+    concurrently(
+      [&]() {
+        u1 = shaft_solver->solve_load_field(
+          shaft->assemble_load_vector(shaft_load));
+      },
+      [&]() {
+        u2 = hub_solver->solve_load_field(hub->assemble_load_vector(hub_load));
+      });
+    Vector<double> change(interface->n_points());
+    for (unsigned int i = 0; i < change.size(); ++i)
+      change[i]
+        = u1[shaft->get_interface_dofs()[i]] - u2[hub->get_interface_dofs()[i]];
+    return change;
+  }
+
+
+
+  FitDesign
+  CoaxialFit::state_design() const
+  {
+    return FitDesign(parameters,
+                     *shaft,
+                     shaft_field,
+                     *hub,
+                     hub_field,
+                     coupling->contact_force());
+  }
+
+
+
+  bool
+  CoaxialFit::use_condensed_operator() const
+  {
+    const InterfaceOperatorType type = parameters.coupling.interface_operator;
+    if (amg_solver) // no compliance without a factor
+      return false;
+    return type == InterfaceOperatorType::condensed
+           || (type == InterfaceOperatorType::automatic
+               && interface->n_points() <= max_condensed_points);
+  }
+
+
+
+  UnilateralActiveSet::Update
+  CoaxialFit::active_set_mode() const
+  {
+    const ActiveSetUpdateType mode = parameters.contact.active_set_update;
+    const bool                plain_fixed
+      = parameters.coupling.alpha_rule() == AlphaRuleType::fixed
+        && parameters.coupling.accelerator() == AcceleratorType::none;
+    if (mode == ActiveSetUpdateType::every_step
+        || (mode == ActiveSetUpdateType::automatic && plain_fixed))
+      return UnilateralActiveSet::Update::every_step;
+    return UnilateralActiveSet::Update::when_converged;
+  }
+
+
+
+  PressureSummary
+  CoaxialFit::pressure_summary() const
+  {
+    return PressureSummary(parameters, *interface, coupling->contact_force());
+  }
+
+
+
+  std::vector<std::string>
+  CoaxialFit::warnings(const PressureSummary &pressure) const
+  {
+    std::vector<std::string> list;
+    if (!coupling->converged())
+      {
+        std::ostringstream w;
+        w << "not converged within Coupling/Max steps = "
+          << parameters.coupling.max_steps << " (|du|/d = " << std::scientific
+          << std::setprecision(3) << coupling->displacement_residual()
+          << ", |dp|/p = " << coupling->traction_residual() << ")";
+        list.push_back(w.str());
+      }
+    if (!parameters.contact.unilateral && pressure.min < 0.)
+      {
+        std::ostringstream w;
+        w << std::setprecision(4)
+          << "the bilateral contact pressure is tensile (min " << pressure.min
+          << " MPa at z = " << pressure.z_of_min
+          << " mm): the surfaces want to separate there, which "
+          << "Contact/Unilateral = false does not allow";
+        list.push_back(w.str());
+      }
+    return list;
+  }
+
+
+
+  void
+  CoaxialFit::print_report(const PressureSummary          &pressure,
+                           const Complementarity          &complementarity,
+                           const std::vector<std::string> &warnings) const
+  {
+    std::ostringstream report;
+    report << std::fixed << std::setprecision(4);
+    if (coupling->converged())
+      report << "  converged in " << coupling->n_steps() << " steps ("
+             << coupling->steps_to_displacement_mismatch(1e-2)
+             << " to the paper's criterion max|du|/d < 1e-2)\n";
+    if (parameters.contact.unilateral)
+      {
+        const auto zones = coupling->get_active_set().separated_zones(
+          interface->z(), parameters.geometry.contact_length());
+        report << "  separated zones:";
+        if (zones.empty())
+          report << " none";
+        for (const auto &zone : zones)
+          report << " [" << std::setprecision(2) << zone.first << ", "
+                 << zone.second << "] mm";
+        report << " (" << coupling->get_active_set().n_changes()
+               << " active set changes)\n"
+               << std::scientific << std::setprecision(2)
+               << "  complementarity: max tension "
+               << complementarity.max_tension_relative << ", max penetration/d "
+               << complementarity.max_penetration_relative << ", max |p gap| "
+               << complementarity.max_pressure_gap_relative << std::fixed
+               << std::setprecision(4) << '\n';
+      }
+    report << "  pressure at z = 0: " << pressure.at_mid_plane
+           << " MPa, mean: " << pressure.mean << " MPa, Lame: " << pressure.lame
+           << " MPa\n"
+           << "  pressure min: " << pressure.min
+           << " MPa at z = " << pressure.z_of_min
+           << " mm, max: " << pressure.max
+           << " MPa at z = " << pressure.z_of_max
+           << " mm (corner value is singular)\n";
+    for (const std::string &w : warnings)
+      report << "  warning: " << w << '\n';
+    out << report.str();
+  }
+
+
+
+  void
+  CoaxialFit::output_results(const std::string &directory)
+  {
+    const PressureSummary pressure = pressure_summary();
+    const Complementarity complementarity(*interface, *coupling);
+    design = std::make_unique<FitDesign>(parameters,
+                                         *shaft,
+                                         shaft_field,
+                                         *hub,
+                                         hub_field,
+                                         coupling->contact_force());
+    if (parameters.design.corner_trend
+        && parameters.mesh.global_refinements > 0)
+      {
+        TimerOutput::Scope        scope(timer, "corner_trend");
+        const std::vector<double> coarser = coarser_corner_values();
+        for (unsigned int i = 0; i < coarser.size(); ++i)
+          design->surface_maxima[i].corner_coarser = coarser[i];
+      }
+    std::unique_ptr<OperationAnalysis> operation;
+    {
+      TimerOutput::Scope scope(timer, "operation");
+      operation = std::make_unique<OperationAnalysis>(parameters, *this);
+    }
+    // The parts are pressed together at assembly, not in service.
+    design->press_in_force     = operation->assembly.press_in_force;
+    design->press_in_force_din = operation->assembly.press_in_force_din;
+    std::vector<std::string> warning_list = parameters.input_warnings();
+    for (const auto &list : {warnings(pressure), design->warnings(parameters)})
+      warning_list.insert(warning_list.end(), list.begin(), list.end());
+    if (operation->has_loads && !operation->holds)
+      warning_list.push_back(operation->verdict);
+    print_report(pressure, complementarity, warning_list);
+    print_design(out, parameters, *design);
+    operation->print(out);
+
+    std::map<std::string, double> timing;
+    const RunResults              results{parameters,
+                             *shaft,
+                             *hub,
+                             shaft_field,
+                             hub_field,
+                             *interface,
+                             *coupling,
+                             statistics,
+                             pressure,
+                             complementarity,
+                             *design,
+                             *operation,
+                             timing,
+                             warning_list};
+    std::vector<std::string>      lines;
+    {
+      TimerOutput::Scope scope(timer, "output");
+      // The files are independent (each writer its own), except the
+      // report, which shows the plots that exist: it comes last.
+      const auto writers = make_result_writers(parameters.output);
+      lines.resize(writers.size());
+      std::vector<std::function<void()>> jobs;
+      for (unsigned int i = 0; i < writers.size(); ++i)
+        if (!writers[i]->needs_the_other_files())
+          jobs.emplace_back(
+            [&, i]() { lines[i] = writers[i]->write(results, directory); });
+      each_on_own_thread(jobs);
+      for (unsigned int i = 0; i < writers.size(); ++i)
+        if (writers[i]->needs_the_other_files())
+          lines[i] = writers[i]->write(results, directory);
+    }
+    for (const std::string phase : {"setup",
+                                    "loads",
+                                    "factorization",
+                                    "condensation",
+                                    "coarse_case",
+                                    "coupling",
+                                    "corner_trend",
+                                    "operation",
+                                    "output"})
+      timing[phase] = 0.;
+    for (const auto &[phase, seconds] :
+         timer.get_summary_data(TimerOutput::total_wall_time))
+      timing[phase] = seconds;
+    double total = 0.;
+    for (const auto &[phase, seconds] : timing)
+      total += seconds;
+    timing["total"] = total;
+    lines.push_back(SummaryWriter().write(results, directory));
+
+    for (const std::string &line : lines)
+      pcout << "  " << line << '\n';
+    if (parameters.output.print_timing)
+      pcout << std::fixed << std::setprecision(3) << "  wall time: setup "
+            << timing["setup"] << " s, loads " << timing["loads"]
+            << " s, factorization " << timing["factorization"]
+            << " s, condensation " << timing["condensation"]
+            << " s, coarse case " << timing["coarse_case"] << " s, coupling "
+            << timing["coupling"] << " s, corner trend "
+            << timing["corner_trend"] << " s, output " << timing["output"]
+            << " s, total " << timing["total"] << " s\n";
+  }
+
+
+
+  std::vector<double>
+  CoaxialFit::coarser_corner_values()
+  {
+    const Parameters coarse = coarser_parameters();
+    // Solved already when the coupling started from it.
+    if (twin_state == TwinState::stale)
+      {
+        if (coarse_twin)
+          coarse_twin->reuse_for(coarse);
+        else
+          prepare_corner_trend();
+        try
+          {
+            coarse_twin->solve(nullptr);
+            twin_state = TwinState::solved;
+          }
+        catch (const SolverError &)
+          {
+            twin_state = TwinState::failed;
+          }
+      }
+    // Only a figure of the report depends on it: said there as not
+    // available; the run itself is unaffected.
+    if (twin_state == TwinState::failed)
+      return {};
+    CoaxialFit         &fit = *coarse_twin;
+    const FitDesign     coarse_design(coarse,
+                                  *fit.shaft,
+                                  fit.shaft_field,
+                                  *fit.hub,
+                                  fit.hub_field,
+                                  fit.coupling->contact_force());
+    std::vector<double> values;
+    for (const FitDesign::SurfaceMaximum &m : coarse_design.surface_maxima)
+      values.push_back(m.corner);
+    return values;
+  }
+
+
+
+  bool
+  CoaxialFit::run()
+  {
+    // Memory and the output directory are checked first, so that a run
+    // that cannot finish or cannot be written stops before any work.
+    check_memory(parameters);
+    ResultDirectory directory(parameters.output_directory(),
+                              all_result_file_names());
+    const bool      converged = run_in(directory.staging_path());
+    directory.commit(out);
+    pcout << "  results in " << parameters.output_directory() << '\n';
+    return converged;
+  }
+
+
+
+  Parameters
+  CoaxialFit::coarser_parameters() const
+  {
+    Parameters coarse = parameters;
+    --coarse.mesh.global_refinements;
+    coarse.design.corner_trend   = false;
+    coarse.coupling.coarse_model = false;
+    // The coarser case of a monolithic run (its corner trend) is solved by
+    // the staggered solver: the same discrete problem to the coupling
+    // tolerance, in a tenth of the time (variant 17, refinement 5: the
+    // monolithic twin took 46.7 s of 356 s). It is a diagnostic of the
+    // corner, never a design figure.
+    coarse.solver.method = SolverMethod::staggered;
+    return coarse;
+  }
+
+
+
+  void
+  CoaxialFit::set_up_coarse_twin()
+  {
+    if (coarse_twin)
+      return;
+    coarse_twin
+      = std::make_unique<CoaxialFit>(coarser_parameters(), out, false);
+    coarse_twin->setup_system();
+  }
+
+
+
+  void
+  CoaxialFit::prepare_corner_trend()
+  {
+    if (coarse_twin || !(parameters.design.corner_trend || wants_coarse_model())
+        || parameters.mesh.global_refinements == 0)
+      return;
+    set_up_coarse_twin();
+    if (wants_coarse_model()
+        && coarse_twin->interface->n_points() <= max_condensed_points)
+      coarse_twin->condense();
+  }
+
+
+
+  bool
+  CoaxialFit::reusable_across(const std::string &entry)
+  {
+    for (const std::string section :
+         {"Fit/", "Operation/", "Coupling/", "Contact/", "Design/", "Output/"})
+      if (entry.compare(0, section.size(), section) == 0)
+        return true;
+    return false;
+  }
+
+
+
+  void
+  CoaxialFit::reuse_for(const Parameters &other)
+  {
+    Assert(is_set_up, ExcMessage("reuse_for() needs a set-up case"));
+    parameters = other;
+    // The timings of this case are its own (the setup was shared).
+    timer.reset();
+    shaft->set_load(body_load(parameters, true));
+    hub->set_load(body_load(parameters, false));
+    coupling.reset();
+    design.reset();
+    twin_state = TwinState::stale;
+    setup_loads();
+  }
+
+
+
+  bool
+  CoaxialFit::run_in(const std::string &directory)
+  {
+    if (!is_set_up)
+      setup_system();
+    pcout << "coaxfit: case " << parameters.case_name << '\n'
+          << "  shaft: " << shaft->n_cells() << " cells, " << shaft->n_dofs()
+          << " DoFs;  hub: " << hub->n_cells() << " cells, " << hub->n_dofs()
+          << " DoFs;  " << interface->n_points() << " interface points, FE_Q("
+          << parameters.mesh.degree << ")\n";
+    const bool converged = solve(pcout.is_active() ? &out : nullptr);
+    output_results(directory);
+    return converged;
+  }
+} // namespace coaxfit

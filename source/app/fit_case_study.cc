@@ -1,0 +1,162 @@
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/app/fit_case_study.h>
+#include <coaxfit/app/resources.h>
+#include <coaxfit/io/result_directory.h>
+#include <coaxfit/io/result_writers.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace coaxfit
+{
+  FitCaseStudy::FitCaseStudy(const Parameters &parameters,
+                             std::ostream     &out,
+                             const bool        verbose)
+    : parameters(parameters)
+    , out(out)
+    , verbose(verbose)
+  {}
+
+
+
+  std::vector<std::string>
+  FitCaseStudy::file_names()
+  {
+    return {"min", "mean", "max", "fit_cases.csv"};
+  }
+
+
+
+  std::vector<std::string>
+  FitCaseStudy::column_names()
+  {
+    return {"U_mm",
+            "U_effective_mm",
+            "pressure_mid_plane_MPa",
+            "pressure_mean_MPa",
+            "pressure_din_MPa",
+            "torque_capacity_Nm",
+            "torque_capacity_din_Nm",
+            "axial_force_capacity_N",
+            "axial_force_capacity_din_N",
+            "press_in_force_N",
+            "press_in_force_din_N",
+            "safety_slip",
+            "safety_slip_din",
+            "safety_yield_hub",
+            "safety_yield_hub_din",
+            "safety_yield_shaft",
+            "safety_yield_shaft_din"};
+  }
+
+
+
+  bool
+  FitCaseStudy::run()
+  {
+    check_memory(parameters);
+    ResultDirectory directory(parameters.output_directory(),
+                              all_result_file_names());
+    bool            all_converged = true;
+    rows.clear();
+    for (const FitCase c : {FitCase::min, FitCase::mean, FitCase::max})
+      {
+        const Parameters  p   = parameters.for_fit_case(c);
+        const std::string sub = directory.staging_path() + "/" + to_string(c);
+        std::filesystem::create_directory(sub);
+        CoaxialFit            fit(p, out, verbose);
+        const bool            converged = fit.run_in(sub);
+        const FitDesign      &d         = fit.get_design();
+        const PressureSummary pressure  = fit.pressure_summary();
+        rows.push_back({c,
+                        converged,
+                        fit.get_coupling().n_steps(),
+                        {p.fit_limits.used(),
+                         2. * p.geometry.d,
+                         pressure.at_mid_plane,
+                         d.mean_pressure,
+                         d.pressure_din,
+                         d.torque_capacity,
+                         d.torque_capacity_din,
+                         d.axial_force_capacity,
+                         d.axial_force_capacity_din,
+                         d.press_in_force,
+                         d.press_in_force_din,
+                         d.safety_slip,
+                         d.safety_slip_din,
+                         d.safety_yield_hub,
+                         d.safety_yield_hub_din,
+                         d.safety_yield_shaft,
+                         d.safety_yield_shaft_din}});
+        all_converged = all_converged && converged;
+      }
+    output_results(directory.staging_path());
+    directory.commit(out);
+    if (verbose)
+      out << "  results in " << parameters.output_directory()
+          << " (subdirectories min, mean, max)\n";
+    return all_converged;
+  }
+
+
+
+  void
+  FitCaseStudy::output_results(const std::string &directory) const
+  {
+    const std::vector<std::string> columns = column_names();
+    const std::string              name    = directory + "/fit_cases.csv";
+    std::ofstream                  csv     = open_result_file(name);
+    csv << "case,converged,steps";
+    for (const std::string &c : columns)
+      csv << ',' << c;
+    csv << '\n';
+    for (const Row &row : rows)
+      {
+        csv << to_string(row.fit_case) << ',' << (row.converged ? 1 : 0) << ','
+            << row.steps;
+        for (const double v : row.values)
+          {
+            csv << ',';
+            if (std::isfinite(v))
+              csv << v;
+          }
+        csv << '\n';
+      }
+    close_result_file(csv, name);
+
+    // The console: one line per figure, one column per case.
+    std::ostringstream table;
+    table << "coaxfit: fit " << parameters.fit_limits.iso_fit
+          << " at D_F = " << 2. * parameters.geometry.R1
+          << " mm, cases min, mean, max\n"
+          << "    " << std::left << std::setw(28) << "" << std::right;
+    for (const Row &row : rows)
+      table << std::setw(12) << to_string(row.fit_case);
+    table << "\n    " << std::left << std::setw(28) << "converged (steps)"
+          << std::right;
+    for (const Row &row : rows)
+      table << std::setw(12)
+            << ((row.converged ? "yes (" : "NO (") + std::to_string(row.steps)
+                + ")");
+    table << '\n';
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      {
+        table << "    " << std::left << std::setw(28) << columns[i]
+              << std::right;
+        for (const Row &row : rows)
+          {
+            table << std::setw(12);
+            if (std::isfinite(row.values[i]))
+              table << std::setprecision(5) << row.values[i];
+            else
+              table << "-";
+          }
+        table << '\n';
+      }
+    table << "  fit_cases.csv: the design figures of the three cases\n";
+    out << table.str();
+  }
+} // namespace coaxfit

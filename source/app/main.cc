@@ -1,0 +1,414 @@
+#include <coaxfit/app/case_batch.h>
+#include <coaxfit/app/parameter_sweep.h>
+#include <coaxfit/app/run_guard.h>
+#include <coaxfit/app/usage.h>
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/base/interruption.h>
+#include <coaxfit/io/result_directory.h>
+#include <coaxfit/parameters/parameters.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <new>
+#include <optional>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <utility>
+#include <vector>
+
+namespace
+{
+
+  /** Standard output must have taken everything written to it. */
+  void
+  check_standard_output()
+  {
+    std::cout.flush();
+    if (!std::cout)
+      throw coaxfit::ResourceError("cannot write to standard output");
+  }
+
+
+
+  /**
+   * Standard output must be able to take the report before any work: it is
+   * not /dev/full (also what a closed standard output is opened on, see
+   * ensure_standard_descriptors()). Other failures to write show when the
+   * results are committed (ResultDirectory::commit), which then does not
+   * happen.
+   */
+  void
+  check_standard_output_usable()
+  {
+    struct stat out = {}, full = {};
+    if (::fstat(STDOUT_FILENO, &out) == 0 && S_ISCHR(out.st_mode)
+        && ::stat("/dev/full", &full) == 0 && out.st_rdev == full.st_rdev)
+      throw coaxfit::ResourceError(
+        "standard output is /dev/full (or was closed): the report could not "
+        "be shown; nothing was run or written");
+  }
+
+
+
+  /** What the command line asks for. */
+  struct CommandLine
+  {
+    enum class Action
+    {
+      run,
+      help,
+      print_parameters
+    } action
+      = Action::run;
+    std::vector<std::pair<std::string, std::string>> overrides;
+    std::vector<std::string>                         filenames;
+    bool                                             quiet = false;
+    std::optional<std::string>                       sweep;
+    std::string                                      table;
+    unsigned int                                     jobs = 0; ///< 0: cores
+  };
+
+  /** The argument of option @p option at argv[i + 1]. */
+  std::string
+  option_argument(int &i, const int argc, char **argv, const char *what)
+  {
+    if (i + 1 >= argc)
+      throw coaxfit::InputError(std::string(argv[i]) + " needs an argument "
+                                + what);
+    return argv[++i];
+  }
+
+  /**
+   * Standard input, output and error open: a closed one is opened on
+   * /dev/null (input) or /dev/full (output: writing fails and is reported
+   * by the exit code), so that no file or pipe of the program takes its
+   * number and receives what was meant for the console.
+   */
+  void
+  ensure_standard_descriptors()
+  {
+    for (int fd = 0; fd < 3; ++fd)
+      if (::fcntl(fd, F_GETFD) < 0 && errno == EBADF)
+        ::open(fd == 0 ? "/dev/null" : "/dev/full",
+               fd == 0 ? O_RDONLY : O_WRONLY);
+  }
+
+  /** @p path made absolute, normalized, symbolic links resolved. */
+  std::filesystem::path
+  resolved(const std::string &path)
+  {
+    std::error_code error;
+    return std::filesystem::weakly_canonical(
+      std::filesystem::absolute(coaxfit::normalized_directory(path)), error);
+  }
+
+  /** The output directory of a case of several files. */
+  struct Target
+  {
+    std::filesystem::path resolved; ///< see resolved()
+    std::string           given;    ///< as the parameters say
+    std::string           file;     ///< the case's parameter file
+  };
+
+  /** Whether @p inner is @p outer or lies inside it. */
+  bool
+  is_within(const std::filesystem::path &inner,
+            const std::filesystem::path &outer)
+  {
+    auto i = inner.begin();
+    for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
+      if (i == inner.end() || *i != *o)
+        return false;
+    return true;
+  }
+
+  /**
+   * Check the table's file before any case runs: not an input file, not
+   * in a case's output directory (each is replaced as a whole), not a
+   * directory or device, and in a directory that can be written.
+   */
+  void
+  check_table(const std::string              &table,
+              const std::vector<std::string> &inputs,
+              const std::vector<Target>      &targets)
+  {
+    using coaxfit::InputError;
+    namespace fs           = std::filesystem;
+    const fs::path    path = resolved(table);
+    const std::string said = "--table " + table + ": ";
+    std::error_code   error;
+    const auto        status = fs::status(path, error);
+    if (fs::exists(status) && !fs::is_regular_file(status))
+      throw InputError(said + "exists and is not a regular file");
+    for (const std::string &input : inputs)
+      if (fs::equivalent(path, input, error))
+        throw InputError(said + "is the parameter file " + input
+                         + ", read by this run");
+    for (const Target &target : targets)
+      if (is_within(path, target.resolved))
+        throw InputError(said + "lies in " + target.given
+                         + ", the output directory of " + target.file
+                         + ", which its results replace as a whole");
+    fs::path existing = path.parent_path();
+    while (!existing.empty() && !fs::exists(existing, error))
+      existing = existing.parent_path();
+    // A file is really created there and removed (access() says yes to
+    // root in /proc and on read-only mounts).
+    std::string probe = (existing / ".coaxfit-table-probe-XXXXXX").string();
+    const int   fd    = existing.empty() || !fs::is_directory(existing, error) ?
+                          -1 :
+                          ::mkstemp(probe.data());
+    if (fd < 0)
+      throw InputError(said + "cannot be written (" + existing.string()
+                       + " is not a writable directory); nothing was run");
+    ::close(fd);
+    ::unlink(probe.c_str());
+  }
+
+  /**
+   * Several parameter files: one case each, run by a CaseBatch; the table
+   * printed and written; the batch's exit code.
+   */
+  int
+  run_files(const CommandLine &line, const unsigned int jobs)
+  {
+    using namespace coaxfit;
+    std::vector<BatchCase>   cases(line.filenames.size());
+    std::vector<Target>      targets;
+    std::vector<std::string> inputs = line.filenames; // and their includes
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      {
+        BatchCase &c = cases[i];
+        c.label      = line.filenames[i];
+        try
+          {
+            auto p = std::make_shared<Parameters>(
+              read_parameters(line.filenames[i], line.overrides));
+            targets.push_back({resolved(p->output_directory()),
+                               p->output_directory(),
+                               line.filenames[i]});
+            inputs.insert(inputs.end(),
+                          p->files_read.begin(),
+                          p->files_read.end());
+            c.parameters = p;
+          }
+        catch (const InputError &e)
+          {
+            c.input_error = e.what();
+          }
+      }
+    // Two cases whose directories are one or lie in each other would
+    // replace each other's results: the whole batch is refused before any
+    // case runs.
+    for (unsigned int i = 0; i < targets.size(); ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        {
+          const Target &a = targets[i], &b = targets[j];
+          if (is_within(a.resolved, b.resolved)
+              || is_within(b.resolved, a.resolved))
+            throw InputError(
+              "parameter Output/Directory = " + a.given + " of " + a.file
+              + (a.resolved == b.resolved          ? " is also that of " :
+                 is_within(a.resolved, b.resolved) ? " lies in that of " :
+                                                     " contains that of ")
+              + b.file + " (" + b.given
+              + "); each case needs a directory of its own, none inside "
+                "another's; nothing was run");
+        }
+    std::string table = line.table;
+    if (table.empty())
+      for (const BatchCase &c : cases)
+        if (c.parameters)
+          {
+            const std::filesystem::path first(
+              normalized_directory(c.parameters->output_directory()));
+            table
+              = (first.has_parent_path() ? first.parent_path() / "cases.csv" :
+                                           std::filesystem::path("cases.csv"))
+                  .string();
+            break;
+          }
+    if (!table.empty())
+      check_table(table, inputs, targets);
+
+    const std::vector<CaseOutcome> outcomes
+      = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
+    std::cout << "\ncoaxfit: " << cases.size() << " cases\n";
+    CaseBatch::print_table(std::cout, cases, outcomes);
+    if (!table.empty())
+      {
+        std::error_code error;
+        std::filesystem::create_directories(
+          std::filesystem::path(table).parent_path(), error);
+        try
+          {
+            write_file_atomically(table, CaseBatch::table_csv(cases, outcomes));
+          }
+        catch (const std::exception &e)
+          {
+            throw ResourceError(
+              std::string(e.what())
+              + "; the table was not written, but the cases' own results "
+                "are in place in their output directories");
+          }
+        std::cout << "  table in " << table << std::endl;
+      }
+    return CaseBatch::exit_code(outcomes);
+  }
+
+
+
+  /** Parse the arguments; throws InputError on a malformed command line. */
+  CommandLine
+  parse_command_line(int argc, char **argv)
+  {
+    using coaxfit::InputError;
+    CommandLine line;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          line.action = CommandLine::Action::help;
+        else if (arg == "--print-parameters")
+          line.action = CommandLine::Action::print_parameters;
+        else if (arg == "--quiet" || arg == "-q")
+          line.quiet = true;
+        else if (arg == "--set")
+          {
+            if (i + 1 >= argc)
+              throw InputError("--set needs an argument Section/Name=value");
+            const std::string setting = argv[++i];
+            const auto        eq      = setting.find('=');
+            if (eq == std::string::npos)
+              throw InputError("--set " + setting
+                               + ": expected Section/Name=value");
+            line.overrides.emplace_back(setting.substr(0, eq),
+                                        setting.substr(eq + 1));
+          }
+        else if (arg == "--sweep")
+          {
+            if (line.sweep)
+              throw InputError("--sweep given twice (one parameter is swept "
+                               "at a time)");
+            line.sweep
+              = option_argument(i, argc, argv, "Section/Name=v1,v2,...");
+          }
+        else if (arg == "--table")
+          line.table = option_argument(i, argc, argv, "FILE.csv");
+        else if (arg == "--jobs" || arg == "-j")
+          {
+            const std::string n = option_argument(i, argc, argv, "N");
+            if (n.empty() || n.size() > 4
+                || n.find_first_not_of("0123456789") != std::string::npos
+                || std::stoi(n) < 1 || std::stoi(n) > 1024)
+              throw InputError("--jobs " + n
+                               + ": expected a whole number from 1 to 1024");
+            line.jobs = std::stoi(n);
+          }
+        else if (arg.size() > 1 && arg[0] == '-')
+          throw InputError("unknown option '" + arg + "' (see coaxfit --help)");
+        else
+          line.filenames.push_back(arg);
+      }
+    if (line.action == CommandLine::Action::run && line.filenames.empty())
+      throw InputError("no parameter file given (see coaxfit --help)");
+    if (line.sweep && line.filenames.size() > 1)
+      throw InputError("--sweep runs one parameter file ("
+                       + std::to_string(line.filenames.size()) + " given)");
+    if (!line.table.empty() && line.filenames.size() < 2)
+      throw InputError("--table is the table of several parameter files "
+                       "(a sweep writes sweep.csv into its directory)");
+    return line;
+  }
+} // namespace
+
+
+
+namespace
+{
+  /** The program: its exit code. */
+  int
+  coaxfit_main(int argc, char **argv)
+  {
+    using namespace coaxfit;
+    return exit_code_of(
+      [&]() {
+        ensure_standard_descriptors();
+        Interruption::install();
+        const CommandLine line = parse_command_line(argc, argv);
+        if (line.action == CommandLine::Action::help)
+          std::cout << coaxfit::usage;
+        else if (line.action == CommandLine::Action::print_parameters)
+          try
+            {
+              print_parameters(std::cout);
+            }
+          catch (const std::exception &) // deal.II's ExcIO
+            {
+              std::cout.setstate(std::ios::badbit);
+            }
+        if (line.action != CommandLine::Action::run)
+          {
+            check_standard_output();
+            return 0;
+          }
+
+        check_standard_output_usable();
+        const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
+        if (line.sweep)
+          {
+            const int code = ParameterSweep(line.filenames[0],
+                                            line.overrides,
+                                            SweepSpec::parse(*line.sweep),
+                                            jobs,
+                                            !line.quiet,
+                                            std::cout,
+                                            std::cerr)
+                               .run();
+            check_standard_output();
+            return code;
+          }
+        if (line.filenames.size() > 1)
+          {
+            const int code = run_files(line, jobs);
+            check_standard_output();
+            return code;
+          }
+
+        const Parameters parameters
+          = read_parameters(line.filenames[0], line.overrides);
+        const CaseFigures figures
+          = run_case(parameters, std::cout, !line.quiet);
+        check_standard_output();
+        if (!figures.converged)
+          std::cerr << not_converged_message(parameters) << std::endl;
+        return figures.converged ? 0 : 2;
+      },
+      std::cerr);
+  }
+} // namespace
+
+
+
+/**
+ * The program's entry, called by the launcher (source/app/launcher/main.cc)
+ * once it has loaded this module. It ends the process with its exit code
+ * (std::_Exit after flushing the streams, without the libraries' exit
+ * handlers: OpenBLAS's never returns when its threads could not get their
+ * buffers under an address space limit).
+ */
+extern "C" [[noreturn]] __attribute__((visibility("default"))) void
+coaxfit_app_main(int argc, char **argv)
+{
+  const int code = coaxfit_main(argc, argv);
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(code);
+}

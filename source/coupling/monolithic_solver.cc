@@ -1,0 +1,191 @@
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <coaxfit/coupling/monolithic_solver.h>
+
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace coaxfit
+{
+  MonolithicSolver::MonolithicSolver(const BodyDiscretization  &shaft,
+                                     const BodyDiscretization  &hub,
+                                     const ContactInterface    &interface,
+                                     const UnilateralActiveSet &active_set,
+                                     const unsigned int         max_steps)
+    : InterfaceSolver(active_set)
+    , shaft(shaft)
+    , hub(hub)
+    , interface(interface)
+    , max_steps(max_steps)
+  {}
+
+
+
+  void
+  MonolithicSolver::setup_pattern()
+  {
+    // The condensed matrix of any active set has its entries among those
+    // of the two stiffness matrices side by side with each row and each
+    // column either kept or (tied point) moved to the shaft's DoF: the
+    // union of the patterns of all active sets.
+    const SparseMatrix<double>     &K1 = shaft.get_stiffness_matrix();
+    const SparseMatrix<double>     &K2 = hub.get_stiffness_matrix();
+    const unsigned int              n1 = K1.m(), n = K1.m() + K2.m();
+    const AffineConstraints<double> all_tied = tie_constraints(
+      std::vector<bool>(shaft.get_interface_dofs().size(), true));
+    const auto images = [&](const unsigned int i) {
+      const auto *line = all_tied.get_constraint_entries(i);
+      return std::array<unsigned int, 2>{
+        {i, line ? static_cast<unsigned int>((*line)[0].first) : i}};
+    };
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int row = 0; row < K1.m(); ++row)
+      for (auto e = K1.begin(row); e != K1.end(row); ++e)
+        dsp.add(row, e->column());
+    for (unsigned int row = 0; row < K2.m(); ++row)
+      for (auto e = K2.begin(row); e != K2.end(row); ++e)
+        for (const unsigned int r : images(n1 + row))
+          for (const unsigned int c : images(n1 + e->column()))
+            dsp.add(r, c);
+    pattern.copy_from(dsp);
+    cholesky.analyze(SparseMatrix<double>(pattern));
+  }
+
+
+
+  AffineConstraints<double>
+  MonolithicSolver::tie_constraints(const std::vector<bool> &tied) const
+  {
+    const unsigned int        n1    = shaft.n_dofs();
+    const auto               &dofs1 = shaft.get_interface_dofs();
+    const auto               &dofs2 = hub.get_interface_dofs();
+    AffineConstraints<double> constraints;
+    for (unsigned int i = 0; i < dofs1.size(); ++i)
+      if (tied[i])
+        {
+          constraints.add_line(n1 + dofs2[i]);
+          constraints.add_entry(n1 + dofs2[i], dofs1[i], 1.);
+          constraints.set_inhomogeneity(n1 + dofs2[i],
+                                        interface.interference(i));
+        }
+    constraints.close();
+    return constraints;
+  }
+
+
+
+  void
+  MonolithicSolver::solve_tied()
+  {
+    const SparseMatrix<double> &K1 = shaft.get_stiffness_matrix();
+    const SparseMatrix<double> &K2 = hub.get_stiffness_matrix();
+    const unsigned int          n1 = K1.m(), n = K1.m() + K2.m();
+    const auto                 &dofs1 = shaft.get_interface_dofs();
+
+    if (pattern.empty())
+      setup_pattern();
+
+    // u2 = u1 + d_i at every tied point, as an inhomogeneous constraint on
+    // the hub's DoF there.
+    const AffineConstraints<double> constraints
+      = tie_constraints(active_set.in_contact());
+    SparseMatrix<double> matrix(pattern);
+    Vector<double>       rhs(n);
+    for (unsigned int row = 0; row < K1.m(); ++row)
+      for (auto e = K1.begin(row); e != K1.end(row); ++e)
+        matrix.set(row, e->column(), e->value());
+    for (unsigned int row = 0; row < K2.m(); ++row)
+      for (auto e = K2.begin(row); e != K2.end(row); ++e)
+        matrix.set(n1 + row, n1 + e->column(), e->value());
+    constraints.condense(matrix, rhs);
+
+    cholesky.solve(*cholesky.factorize(matrix), rhs);
+    ++factorizations;
+    constraints.distribute(rhs);
+
+    Vector<double> x1(K1.m()), x2(K2.m());
+    for (unsigned int i = 0; i < K1.m(); ++i)
+      x1[i] = rhs[i];
+    for (unsigned int i = 0; i < K2.m(); ++i)
+      x2[i] = rhs[n1 + i];
+    shaft_field = x1;
+    hub_field   = x2;
+
+    // Contact force from the shaft's reaction (row of K1 u1); the hub's
+    // reaction must be the same force (checked as the traction mismatch).
+    const std::vector<bool> all(dofs1.size(), true);
+    const Vector<double>    no_force(dofs1.size());
+    Vector<double>          hub_force;
+    shaft.interface_values(all, no_force, x1, u1, force);
+    hub.interface_values(all, no_force, x2, u2, hub_force);
+    const double magnitude = std::max(interface.max_pressure(force),
+                                      interface.max_pressure(hub_force));
+    last_traction_mismatch
+      = magnitude > 0. ?
+          interface.max_pressure_difference(force, hub_force) / magnitude :
+          0.;
+  }
+
+
+
+  bool
+  MonolithicSolver::run(std::ostream *progress)
+  {
+    history_rows.clear();
+    has_converged = false;
+    if (progress)
+      *progress << "  monolithic solve  |du|/d      |dp|/p      separated\n";
+    for (unsigned int step = 1; step <= max_steps; ++step)
+      {
+        solve_tied();
+        last_displacement_mismatch
+          = interface.relative_gap_residual(u1, u2, active_set.in_contact());
+        // Released points carry no force: the reaction there is zero.
+        for (unsigned int i = 0; i < force.size(); ++i)
+          if (!active_set.in_contact()[i])
+            force[i] = 0.;
+        const bool changed = active_set.update(force, interface.gap(u1, u2));
+        history_rows.push_back({step,
+                                true,
+                                0.,
+                                last_displacement_mismatch,
+                                last_traction_mismatch,
+                                active_set.n_separated()});
+        if (progress)
+          *progress << std::setw(6) << step << "            " << std::scientific
+                    << std::setprecision(3) << last_displacement_mismatch
+                    << "   " << last_traction_mismatch << "   " << std::setw(4)
+                    << active_set.n_separated() << std::endl;
+        if (!changed)
+          {
+            has_converged = true;
+            break;
+          }
+      }
+    return has_converged;
+  }
+
+
+
+  std::pair<Vector<double>, Vector<double>>
+  MonolithicSolver::solve_fields()
+  {
+    return {shaft_field, hub_field};
+  }
+
+
+
+  SolverStatistics
+  MonolithicSolver::statistics() const
+  {
+    SolverStatistics s;
+    s.method         = "monolithic";
+    s.factorizations = {{"coupled", factorizations}};
+    return s;
+  }
+} // namespace coaxfit

@@ -1,0 +1,124 @@
+#include <coaxfit/design/design_report.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace coaxfit
+{
+  std::vector<DesignRow>
+  design_rows(const FitDesign &design)
+  {
+    const double           nan = FitDesign::unknown;
+    std::vector<DesignRow> rows{
+      {"joint pressure, mean (MPa)", design.mean_pressure, design.pressure_din},
+      {"torque capacity (N m)",
+       design.torque_capacity,
+       design.torque_capacity_din},
+      {"axial force capacity (N)",
+       design.axial_force_capacity,
+       design.axial_force_capacity_din},
+      {"press-in force (N)", design.press_in_force, design.press_in_force_din},
+      {"safety against slip", design.safety_slip, design.safety_slip_din}};
+    for (const FitDesign::CheckPoint &c : design.check_points)
+      {
+        rows.push_back(
+          {c.name + ": hoop stress (MPa)", c.fe.hoop(), c.din.hoop});
+        rows.push_back(
+          {c.name + ": radial stress (MPa)", c.fe.radial(), c.din.radial});
+        rows.push_back({c.name + ": von Mises stress (MPa)",
+                        c.fe.von_mises(),
+                        c.din.equivalent()});
+      }
+    for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
+      {
+        std::ostringstream label;
+        label << "max von Mises along " << m.name << " (MPa, z = " << std::fixed
+              << std::setprecision(2) << m.z << " mm)";
+        rows.push_back({label.str(), m.von_mises, nan});
+      }
+    rows.push_back({"safety against yield, hub",
+                    design.safety_yield_hub,
+                    design.safety_yield_hub_din});
+    rows.push_back({"safety against yield, shaft",
+                    design.safety_yield_shaft,
+                    design.safety_yield_shaft_din});
+    return rows;
+  }
+
+
+
+  std::string
+  design_figure(const double value)
+  {
+    if (!std::isfinite(value))
+      return "-";
+    std::ostringstream s;
+    s << std::setprecision(std::abs(value) >= 1e5 ? 4 : 5) << value;
+    return s.str();
+  }
+
+
+
+  std::string
+  corner_text(const FitDesign::SurfaceMaximum &m)
+  {
+    std::ostringstream text;
+    text << m.name << " " << std::setprecision(4) << m.corner << " MPa";
+    if (std::isfinite(m.corner_coarser) && m.corner_coarser > 0.)
+      text << " (one refinement coarser " << m.corner_coarser << " MPa: x"
+           << std::setprecision(3) << m.corner / m.corner_coarser
+           << " per refinement, singular)";
+    else
+      text << " (singular, grows with refinement)";
+    return text.str();
+  }
+
+
+
+  std::string
+  interference_line(const Parameters &parameters)
+  {
+    const FitLimits   &f = parameters.fit_limits;
+    std::ostringstream line;
+    line << std::setprecision(4) << "U = " << f.used() << " mm";
+    if (!f.iso_fit.empty())
+      line << " (" << f.iso_fit << " at D_F = " << 2. * parameters.geometry.R1
+           << " mm: U_min " << f.U_min << ", U_max " << f.U_max << " mm; case "
+           << to_string(f.fit_case) << ")";
+    line << ", smoothing loss " << f.smoothing_loss
+         << " mm, effective U_w = " << 2. * parameters.geometry.d << " mm";
+    return line.str();
+  }
+
+
+
+  void
+  print_design(std::ostream     &out,
+               const Parameters &parameters,
+               const FitDesign  &design)
+  {
+    std::ostringstream table;
+    table << "  design: " << interference_line(parameters) << '\n'
+          << "    " << std::left << std::setw(54) << "" << std::right
+          << std::setw(12) << "FE" << std::setw(12) << "DIN 7190" << '\n';
+    for (const DesignRow &row : design_rows(design))
+      {
+        table << "    " << std::left << std::setw(54) << row.label
+              << std::right;
+        for (const double value : {row.fe, row.din})
+          {
+            table << std::setw(12) << design_figure(value);
+          }
+        table << '\n';
+      }
+    table << "    (von Mises: FE of its full stress state, DIN 7190 of "
+             "Lame's plane stress; maxima at least "
+          << std::setprecision(3) << design.edge_distance
+          << " mm from the end of the joint";
+    for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
+      table << "; at the end, " << corner_text(m);
+    table << ")\n";
+    out << table.str();
+  }
+} // namespace coaxfit

@@ -1,0 +1,185 @@
+#include <coaxfit/design/fit_design.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** @p strength / @p stress, or unknown without a strength. */
+    double
+    safety(const double strength, const double stress)
+    {
+      return strength > 0. && stress > 0. ? strength / stress :
+                                            FitDesign::unknown;
+    }
+  } // namespace
+
+
+
+  FitDesign::FitDesign(const Parameters         &parameters,
+                       const BodyDiscretization &shaft,
+                       const Vector<double>     &shaft_field,
+                       const BodyDiscretization &hub,
+                       const Vector<double>     &hub_field,
+                       const Vector<double>     &contact_force)
+  {
+    const Din7190 din(parameters.geometry,
+                      parameters.shaft,
+                      parameters.hub,
+                      operating_loads(parameters));
+    double        sum = 0.;
+    for (const double F : contact_force)
+      sum += F;
+    normal_force  = 4. * M_PI * sum;
+    mean_pressure = normal_force
+                    / (M_PI * 2. * parameters.geometry.R1 * din.joint_length());
+    pressure_din = din.pressure();
+    compute_capacity(parameters, din);
+    compute_strength(parameters, din, shaft, shaft_field, hub, hub_field);
+  }
+
+
+
+  void
+  FitDesign::compute_capacity(const Parameters &parameters, const Din7190 &din)
+  {
+    const DesignParameters &design = parameters.design;
+    const double            mu     = design.friction_coefficient;
+    const double            R_F    = parameters.geometry.R1;
+    torque_capacity                = 1e-3 * mu * R_F * normal_force;
+    axial_force_capacity           = mu * normal_force;
+    torque_capacity_din            = din.torque(pressure_din, mu);
+    axial_force_capacity_din       = din.axial_force(pressure_din, mu);
+    press_in_force = design.press_in_friction_coefficient * normal_force;
+    press_in_force_din
+      = din.axial_force(pressure_din, design.press_in_friction_coefficient);
+
+    // DIN 7190's resultant of a torque and an axial force on the joint:
+    // the circumferential force 2 M / D_F and the axial force combined.
+    const double circumferential = 2e3 * design.required_torque / (2. * R_F);
+    const double required
+      = std::hypot(circumferential, design.required_axial_force);
+    safety_slip
+      = required > 0. ? axial_force_capacity / required : FitDesign::unknown;
+    safety_slip_din = required > 0. ? axial_force_capacity_din / required :
+                                      FitDesign::unknown;
+  }
+
+
+
+  void
+  FitDesign::compute_strength(const Parameters         &parameters,
+                              const Din7190            &din,
+                              const BodyDiscretization &shaft,
+                              const Vector<double>     &shaft_field,
+                              const BodyDiscretization &hub,
+                              const Vector<double>     &hub_field)
+  {
+    const GeometryParameters &g = parameters.geometry;
+    edge_distance
+      = parameters.design.edge_distance_for(2. * g.contact_length());
+    check_points
+      = {{"hub bore", stress_at(hub, hub_field, {g.R1, 0.}), din.hub_bore()},
+         {"hub outer surface",
+          stress_at(hub, hub_field, {g.R2, 0.}),
+          din.hub_outer()},
+         {"shaft surface",
+          stress_at(shaft, shaft_field, {g.R1, 0.}),
+          din.shaft_outer()},
+         {g.R0 > 0. ? "shaft bore" : "shaft axis",
+          stress_at(shaft, shaft_field, {g.R0, 0.}),
+          din.shaft_inner()}};
+
+    // The end of the joint, where the stresses are singular.
+    const double z_corner  = std::min(g.L1, g.L2);
+    hub_bore_stresses      = stresses_along_radius(hub, hub_field, g.R1);
+    shaft_surface_stresses = stresses_along_radius(shaft, shaft_field, g.R1);
+    surface_maxima.clear();
+    for (const auto &[name, states] :
+         {std::pair<std::string, const std::vector<StressState> *>{
+            "hub bore", &hub_bore_stresses},
+          {"shaft surface", &shaft_surface_stresses}})
+      {
+        SurfaceMaximum m;
+        m.name        = name;
+        m.von_mises   = FitDesign::unknown; // none outside the band
+        double corner = std::numeric_limits<double>::max();
+        for (const StressState &s : *states)
+          {
+            const double distance = std::abs(s.z - z_corner);
+            if (distance < corner)
+              {
+                corner   = distance;
+                m.corner = s.von_mises();
+              }
+            if (distance >= edge_distance
+                && !(s.von_mises() <= m.von_mises)) // NaN: the first
+              {
+                m.von_mises = s.von_mises();
+                m.z         = s.z;
+              }
+          }
+        surface_maxima.push_back(m);
+      }
+
+    // fmax ignores a maximum that does not exist (NaN).
+    const auto largest = [](const double a, const double b, const double c) {
+      return std::fmax(std::fmax(a, b), c);
+    };
+    safety_yield_hub       = safety(parameters.hub.yield_strength,
+                              largest(check_points[0].fe.von_mises(),
+                                      check_points[1].fe.von_mises(),
+                                      surface_maxima[0].von_mises));
+    safety_yield_shaft     = safety(parameters.shaft.yield_strength,
+                                largest(check_points[2].fe.von_mises(),
+                                        check_points[3].fe.von_mises(),
+                                        surface_maxima[1].von_mises));
+    safety_yield_hub_din   = safety(parameters.hub.yield_strength,
+                                  std::max(check_points[0].din.equivalent(),
+                                           check_points[1].din.equivalent()));
+    safety_yield_shaft_din = safety(parameters.shaft.yield_strength,
+                                    std::max(check_points[2].din.equivalent(),
+                                             check_points[3].din.equivalent()));
+  }
+
+
+
+  std::vector<std::string>
+  FitDesign::warnings(const Parameters &parameters) const
+  {
+    std::vector<std::string> list;
+    for (const auto &[part, fe, din_value, strength] :
+         {std::tuple<std::string, double, double, double>{
+            "hub",
+            safety_yield_hub,
+            safety_yield_hub_din,
+            parameters.hub.yield_strength},
+          {"shaft",
+           safety_yield_shaft,
+           safety_yield_shaft_din,
+           parameters.shaft.yield_strength}})
+      if (fe < 1. || din_value < 1.)
+        {
+          std::ostringstream w;
+          w.precision(3);
+          w << "the " << part << " yields: safety against yield " << fe
+            << " (FE), " << din_value << " (DIN 7190) with yield strength "
+            << strength
+            << " MPa; the elastic answer overestimates the pressure";
+          list.push_back(w.str());
+        }
+    if (safety_slip < 1. || safety_slip_din < 1.)
+      {
+        std::ostringstream w;
+        w.precision(3);
+        w << "the joint slips under the required loads: safety against "
+             "slip "
+          << safety_slip << " (FE), " << safety_slip_din << " (DIN 7190)";
+        list.push_back(w.str());
+      }
+    return list;
+  }
+} // namespace coaxfit

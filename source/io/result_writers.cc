@@ -1,0 +1,94 @@
+#include <coaxfit/app/fit_case_study.h>
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/io/result_writers.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+namespace coaxfit
+{
+  std::ofstream
+  open_result_file(const std::string &filename)
+  {
+    std::ofstream out(filename);
+    if (!out)
+      throw std::runtime_error("cannot write '" + filename + "'");
+    out << std::setprecision(15);
+    return out;
+  }
+
+
+
+  void
+  check_values_for_output(const Vector<double> &values,
+                          const std::string    &filename)
+  {
+    for (const double v : values)
+      if (!(std::abs(v) < 1e30))
+        throw std::runtime_error(
+          "cannot write '" + filename + "': the solution has the value "
+          + std::to_string(v)
+          + ", not finite or beyond what the file's single-precision "
+            "arrays hold");
+  }
+
+
+
+  void
+  close_result_file(std::ofstream &out, const std::string &filename)
+  {
+    out.close();
+    if (!out)
+      throw ResourceError("writing '"
+                          + std::filesystem::path(filename).filename().string()
+                          + "' failed: disk full, quota or file size limit "
+                            "reached (the earlier results are untouched)");
+  }
+
+
+
+  std::vector<std::unique_ptr<ResultWriter>>
+  make_result_writers(const OutputParameters &output)
+  {
+    std::vector<std::unique_ptr<ResultWriter>> writers;
+    writers.push_back(std::make_unique<ContactPressureWriter>());
+    writers.push_back(std::make_unique<ConvergenceWriter>());
+    writers.push_back(std::make_unique<ParametersWriter>());
+    writers.push_back(std::make_unique<SurfaceStressWriter>());
+    if (output.write_vtu)
+      {
+        writers.push_back(std::make_unique<BodyVtuWriter>(true));
+        writers.push_back(std::make_unique<BodyVtuWriter>(false));
+        writers.push_back(std::make_unique<InterfaceVtpWriter>());
+        writers.push_back(std::make_unique<PvdWriter>());
+      }
+    if (output.write_plots)
+      writers.push_back(std::make_unique<PlotWriter>());
+    if (output.write_report) // last: it shows the plots that exist
+      writers.push_back(std::make_unique<ReportWriter>());
+    return writers;
+  }
+
+
+  std::set<std::string>
+  all_result_file_names()
+  {
+    OutputParameters everything;
+    everything.write_vtu    = true;
+    everything.write_plots  = true;
+    everything.write_report = true;
+    std::set<std::string> names;
+    for (const auto &writer : make_result_writers(everything))
+      for (const std::string &name : writer->file_names())
+        names.insert(name);
+    for (const std::string &name : SummaryWriter().file_names())
+      names.insert(name);
+    // A Fit/Case = all study may have written the directory before.
+    for (const std::string &name : FitCaseStudy::file_names())
+      names.insert(name);
+    return names;
+  }
+} // namespace coaxfit

@@ -1,0 +1,37 @@
+#include <coaxfit/io/result_writers.h>
+
+#include <fstream>
+
+namespace coaxfit
+{
+  std::string
+  ContactPressureWriter::write(const RunResults  &results,
+                               const std::string &directory) const
+  {
+    const std::string      name   = file_names()[0];
+    std::ofstream          out    = open_result_file(directory + "/" + name);
+    const InterfaceSolver &solver = results.solver;
+    const Vector<double>   gap
+      = results.interface.gap(solver.u_shaft(), solver.u_hub());
+    // Total displacements: the contact answer plus the loads of operation.
+    const Vector<double> &load1 = results.interface.load_displacement(true);
+    const Vector<double> &load2 = results.interface.load_displacement(false);
+    out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n";
+    for (unsigned int i = 0; i < results.interface.n_points(); ++i)
+      out << results.interface.z()[i] << ',' << results.pressure.pressure[i]
+          << ',' << solver.u_shaft()[i] + load1[i] << ','
+          << solver.u_hub()[i] + load2[i] << ',' << gap[i]
+          << (solver.get_active_set().in_contact()[i] ? ",contact\n" :
+                                                        ",separated\n");
+    close_result_file(out, directory + "/" + name);
+    return name + ": pressure and gap at "
+           + std::to_string(results.interface.n_points()) + " points";
+  }
+
+
+  std::vector<std::string>
+  ContactPressureWriter::file_names() const
+  {
+    return {"contact_pressure.csv"};
+  }
+} // namespace coaxfit

@@ -1,0 +1,315 @@
+#include <coaxfit/io/result_writers.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace coaxfit
+{
+  namespace
+  {
+    using Json = nlohmann::ordered_json;
+
+    Json
+    geometry_and_mesh(const RunResults &results)
+    {
+      const Parameters &p = results.parameters;
+      const auto       &g = p.geometry;
+      Json              j;
+      j["geometry"] = {
+        {"R0", g.R0},
+        {"R1", g.R1},
+        {"R2", g.R2},
+        {"L1", g.L1},
+        {"L2", g.L2},
+        {"d", g.d},
+        {"contact_length", g.contact_length()},
+        {"units",
+         "mm; R0, R1, R2 radii, L1, L2 half lengths, d radial effective interference of the model"}};
+      j["geometry"].update({{"joint_diameter", 2. * g.R1},
+                            {"shaft_bore_diameter", 2. * g.R0},
+                            {"hub_outer_diameter", 2. * g.R2},
+                            {"hub_length", 2. * g.L2},
+                            {"shaft_length", 2. * g.L1},
+                            {"joint_length", 2. * g.contact_length()}});
+      j["paper"]         = {{"beta1", g.R0 / g.R1},
+                            {"beta2", g.R2 / g.R1},
+                            {"l1", g.L1 / g.R1},
+                            {"l2", g.L2 / g.R1},
+                            {"delta", g.d / g.R1}};
+      const FitLimits &f = p.fit_limits;
+      j["fit"]           = {{"source", f.source},
+                            {"iso_fit", f.iso_fit},
+                            {"case", to_string(f.fit_case)},
+                            {"U_min", f.U_min},
+                            {"U_max", f.U_max},
+                            {"U_used", f.used()},
+                            {"smoothing_loss", f.smoothing_loss},
+                            {"U_effective", 2. * g.d},
+                            {"deviations_mm",
+                             {{"hole_upper", f.hole_upper},
+                              {"hole_lower", f.hole_lower},
+                              {"shaft_upper", f.shaft_upper},
+                              {"shaft_lower", f.shaft_lower}}},
+                            {"units", "mm, diametral"}};
+      Json materials;
+      for (const auto &[name, m] :
+           {std::pair<std::string, const Material *>{"shaft", &p.shaft},
+            {"hub", &p.hub}})
+        materials[name] = {{"name", m->name},
+                           {"E", m->E},
+                           {"nu", m->nu},
+                           {"yield_strength", m->yield_strength},
+                           {"density", m->density},
+                           {"thermal_expansion", m->thermal_expansion}};
+      j["material"] = materials;
+      j["mesh"]
+        = {{"degree", p.mesh.degree},
+           {"global_refinements", p.mesh.global_refinements},
+           {"cells",
+            {{"shaft", results.shaft.n_cells()},
+             {"hub", results.hub.n_cells()}}},
+           {"dofs",
+            {{"shaft", results.shaft.n_dofs()}, {"hub", results.hub.n_dofs()}}},
+           {"interface_points", results.interface.n_points()}};
+      return j;
+    }
+
+    Json
+    contact(const RunResults &results)
+    {
+      const UnilateralActiveSet &set = results.solver.get_active_set();
+      const double length = results.parameters.geometry.contact_length();
+      const auto   zones  = set.separated_zones(results.interface.z(), length);
+      double       separated = 0.;
+      Json         zone_list = Json::array();
+      for (const auto &zone : zones)
+        {
+          separated += zone.second - zone.first;
+          zone_list.push_back({zone.first, zone.second});
+        }
+      // lost: every point separated; touching: in contact without
+      // pressure (U = 0); tension: bilateral contact pulling everywhere.
+      const bool  lost = set.n_separated() == results.interface.n_points();
+      const char *state
+        = lost ? "lost" :
+          !(results.pressure.max > 0.) ?
+                 (results.pressure.min < 0. ? "tension" : "touching") :
+          separated > 0. ? "partial" :
+                           "full";
+      return {{"state", state},
+              {"unilateral", set.enabled()},
+              {"active_set_update",
+               set.update_mode() == UnilateralActiveSet::Update::every_step ?
+                 "every step" :
+                 "when converged"},
+              {"contact_length", length - separated},
+              {"separated_length", separated},
+              {"separated_points", set.n_separated()},
+              {"separated_zones", zone_list}};
+    }
+
+    Json
+    coupling_and_solver(const RunResults &results)
+    {
+      const InterfaceSolver  &solver     = results.solver;
+      const SolverStatistics &statistics = results.statistics;
+      const auto             &c          = results.parameters.coupling;
+      Json                    alpha      = Json::array();
+      // Empty where the method has no alpha (ibqn).
+      for (const CouplingStep &s : solver.history())
+        if (std::isfinite(s.alpha))
+          alpha.push_back(s.alpha);
+      Json j;
+      j["coupling"]
+        = {{"controller",
+            statistics.method == "monolithic" ? std::string("monolithic") :
+                                                to_string(c.controller)},
+           {"alpha_rule", statistics.alpha_rule},
+           {"accelerator", statistics.accelerator},
+           {"coarse_model_points", statistics.coarse_model_points},
+           {"coarse_priors", statistics.coarse_priors},
+           {"coarse_start_steps", statistics.coarse_start_steps},
+           {"tolerance", c.tolerance},
+           {"max_steps", c.max_steps},
+           {"alpha_history", alpha}};
+      j["residuals"]
+        = {{"displacement_relative", solver.displacement_residual()},
+           {"traction_relative", solver.traction_residual()}};
+      j["solver"] = {{"method", statistics.method},
+                     {"linear_solver", statistics.linear_solver},
+                     {"factorizations", statistics.factorizations},
+                     {"solves", statistics.solves}};
+      return j;
+    }
+
+    Json
+    design(const RunResults &results)
+    {
+      const FitDesign &d = results.design;
+      Json             checks, maxima;
+      for (const FitDesign::CheckPoint &c : d.check_points)
+        checks[c.name] = {{"fe",
+                           {{"radial", c.fe.radial()},
+                            {"hoop", c.fe.hoop()},
+                            {"axial", c.fe.sigma[1]},
+                            {"shear_rz", c.fe.sigma[3]},
+                            {"von_mises", c.fe.von_mises()}}},
+                          {"din",
+                           {{"radial", c.din.radial},
+                            {"hoop", c.din.hoop},
+                            {"equivalent", c.din.equivalent()}}}};
+      for (const FitDesign::SurfaceMaximum &m : d.surface_maxima)
+        maxima[m.name]
+          = {{"von_mises", m.von_mises},
+             {"z", m.z},
+             {"at_joint_end_singular", m.corner},
+             {"at_joint_end_one_refinement_coarser", m.corner_coarser}};
+      const DesignParameters &p = results.parameters.design;
+      return {{"units", "MPa, N, N m, mm"},
+              {"friction_coefficient", p.friction_coefficient},
+              {"press_in_friction_coefficient",
+               p.press_in_friction_coefficient},
+              {"required_torque", p.required_torque},
+              {"required_axial_force", p.required_axial_force},
+              {"normal_force", d.normal_force},
+              {"pressure_mean_fe", d.mean_pressure},
+              {"pressure_din", d.pressure_din},
+              {"torque_capacity", d.torque_capacity},
+              {"torque_capacity_din", d.torque_capacity_din},
+              {"axial_force_capacity", d.axial_force_capacity},
+              {"axial_force_capacity_din", d.axial_force_capacity_din},
+              {"press_in_force", d.press_in_force},
+              {"press_in_force_din", d.press_in_force_din},
+              {"safety_slip", d.safety_slip},
+              {"safety_slip_din", d.safety_slip_din},
+              {"safety_yield_shaft", d.safety_yield_shaft},
+              {"safety_yield_shaft_din", d.safety_yield_shaft_din},
+              {"safety_yield_hub", d.safety_yield_hub},
+              {"safety_yield_hub_din", d.safety_yield_hub_din},
+              {"edge_distance", d.edge_distance},
+              {"check_points_mid_plane", checks},
+              {"surface_maxima", maxima}};
+    }
+
+    Json
+    state(const OperationAnalysis::State &s)
+    {
+      return {{"pressure_at_mid_plane", s.pressure_mid_plane},
+              {"pressure_mean", s.pressure_mean},
+              {"pressure_max", s.pressure_max},
+              {"pressure_din", s.pressure_din},
+              {"torque_capacity", s.torque_capacity},
+              {"torque_capacity_din", s.torque_capacity_din},
+              {"axial_force_capacity", s.axial_force_capacity},
+              {"axial_force_capacity_din", s.axial_force_capacity_din},
+              {"safety_slip", s.safety_slip},
+              {"safety_slip_din", s.safety_slip_din},
+              {"safety_yield_shaft", s.safety_yield_shaft},
+              {"safety_yield_hub", s.safety_yield_hub},
+              {"separated_length", s.separated_length},
+              {"contact_lost", s.contact_lost},
+              {"converged", s.converged},
+              {"iterations", s.iterations}};
+    }
+
+    Json
+    operation(const RunResults &results)
+    {
+      const OperationAnalysis   &a = results.operation;
+      const OperationParameters &o = results.parameters.operation;
+      // Infinite speeds (rotation never opens the joint) are null with a
+      // flag, as JSON has no infinity.
+      const auto speed = [](const double n) {
+        return std::isinf(n) ? Json(nullptr) : Json(n);
+      };
+      return {
+        {"units", "MPa, N, N m, mm, degrees C, 1/min"},
+        {"loads",
+         {{"assembly_temperature", o.assembly_temperature},
+          {"shaft_temperature", o.shaft_temperature()},
+          {"hub_temperature", o.hub_temperature()},
+          {"speed", o.speed},
+          {"shaft_bore_pressure", o.shaft_bore_pressure},
+          {"hub_outer_pressure", o.hub_outer_pressure},
+          {"any", a.has_loads}}},
+        {"assembly", state(a.assembly)},
+        {"operating", state(a.operation)},
+        {"loosening_speed", speed(a.loosening_speed_whole)},
+        {"loosening_speed_first_point", speed(a.loosening_speed_first)},
+        {"loosening_speed_din", speed(a.loosening_speed_din)},
+        {"loosening_never",
+         std::isinf(a.loosening_speed_whole)
+           || std::isinf(a.loosening_speed_first)},
+        {"loosening_check",
+         {{"min_pressure_at_first_point_speed", a.min_pressure_at_first},
+          {"separated_points_1_percent_below_first", a.separated_below_first},
+          {"separated_points_1_percent_above_first", a.separated_above_first},
+          {"max_pressure_at_whole_joint_speed", a.max_pressure_at_whole}}},
+        {"loosening_note", a.loosening_note},
+        {"joining",
+         {{"interference_max", a.joining_interference},
+          {"clearance", a.joining_clearance},
+          {"hub_temperature", a.joining_temperature_hub},
+          {"shaft_temperature", a.joining_temperature_shaft}}},
+        {"holds", a.holds},
+        {"verdict", a.verdict}};
+    }
+  } // namespace
+
+
+
+  std::string
+  SummaryWriter::write(const RunResults  &results,
+                       const std::string &directory) const
+  {
+    const PressureSummary &ps = results.pressure;
+    Json                   j;
+    j["case"]       = results.parameters.case_name;
+    j["converged"]  = results.solver.converged();
+    j["iterations"] = results.solver.n_steps();
+    j["iterations_to_paper_criterion"]
+      = results.solver.steps_to_displacement_mismatch(1e-2);
+    j.update(geometry_and_mesh(results));
+    j.update(coupling_and_solver(results));
+    j["pressure"]  = {{"units", "MPa, compression positive"},
+                      {"at_mid_plane", ps.at_mid_plane},
+                      {"mean", ps.mean},
+                      {"min", ps.min},
+                      {"z_of_min", ps.z_of_min},
+                      {"max", ps.max},
+                      {"z_of_max", ps.z_of_max},
+                      {"lame", ps.lame},
+                      {"tensile", ps.min < 0.}};
+    j["contact"]   = contact(results);
+    j["design"]    = design(results);
+    j["operation"] = operation(results);
+    j["active_set"]
+      = {{"changes", results.solver.get_active_set().n_changes()}};
+    j["complementarity"]
+      = {{"max_tension_relative", results.complementarity.max_tension_relative},
+         {"max_penetration_relative",
+          results.complementarity.max_penetration_relative},
+         {"max_pressure_gap_relative",
+          results.complementarity.max_pressure_gap_relative}};
+    j["warnings"] = results.warnings;
+    Json timing(results.timing);
+    timing["units"] = "s";
+    j["timing"]     = timing;
+
+    const std::string name = file_names()[0];
+    std::ofstream     out  = open_result_file(directory + "/" + name);
+    // Non-finite numbers become null; bytes that are not UTF-8 (a file
+    // name) are replaced, so the file is always valid JSON.
+    out << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+    close_result_file(out, directory + "/" + name);
+    return name + ": the figures of this run";
+  }
+
+
+  std::vector<std::string>
+  SummaryWriter::file_names() const
+  {
+    return {"summary.json"};
+  }
+} // namespace coaxfit

@@ -1,0 +1,192 @@
+#include <coaxfit/parameters/parameter_checks.h>
+#include <coaxfit/parameters/scene_parameters.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** Absolute zero in degrees C, and the hottest temperature allowed. */
+    constexpr double absolute_zero = -273.15, hottest = 1000.;
+
+    /**
+     * The number in @p text, or NaN if @p text is not one number (an empty
+     * text is not a number either).
+     */
+    double
+    parse_number(const std::string &text)
+    {
+      const char  *begin = text.c_str();
+      char        *end   = nullptr;
+      const double value = std::strtod(begin, &end);
+      if (end == begin)
+        return std::nan("");
+      while (*end == ' ' || *end == '\t')
+        ++end;
+      return *end == '\0' ? value : std::nan("");
+    }
+
+    /** A temperature entry: empty is the assembly temperature. */
+    double
+    temperature(const std::string &text, const double assembly)
+    {
+      const auto first = text.find_first_not_of(" \t");
+      return first == std::string::npos ? assembly : parse_number(text);
+    }
+
+    void
+    check_temperature(const double       value,
+                      const std::string &text,
+                      const std::string &name)
+    {
+      if (std::isnan(value))
+        throw InputError("parameter " + name + " = '" + text
+                         + "' is not a temperature: allowed is empty (the "
+                           "assembly temperature) or a number of degrees C "
+                           "above -273.15 and at most 1000.");
+      require(value > absolute_zero && value <= hottest,
+              name,
+              value,
+              "-273.15 < T <= 1000 degrees C");
+    }
+  } // namespace
+
+
+
+  void
+  OperationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Operation");
+    prm.add_parameter("Assembly temperature",
+                      assembly_temperature,
+                      "Temperature in degrees C at which the parts are "
+                      "joined and at which the interference is measured "
+                      "(the state of assembly). Allowed: -273.15 < T <= "
+                      "1000.",
+                      Patterns::Double(absolute_zero, hottest));
+    prm.add_parameter("Shaft temperature",
+                      shaft_temperature_text,
+                      "Uniform temperature of the shaft in operation, in "
+                      "degrees C; the shaft expands by Material/Shaft/"
+                      "Thermal expansion times the difference to the "
+                      "assembly temperature (a thermal eigenstrain). Empty: "
+                      "the assembly temperature. Allowed: -273.15 < T <= "
+                      "1000.",
+                      Patterns::Anything());
+    prm.add_parameter("Hub temperature",
+                      hub_temperature_text,
+                      "Uniform temperature of the hub in operation, in "
+                      "degrees C (see Shaft temperature). Empty: the "
+                      "assembly temperature. Allowed: -273.15 < T <= 1000.",
+                      Patterns::Anything());
+    prm.add_parameter("Speed",
+                      speed,
+                      "Rotational speed in operation, in 1/min: the "
+                      "centrifugal body force rho omega^2 r of each body "
+                      "(Material/*/Density). 0: at rest. Allowed: 0 to "
+                      "1e7.",
+                      Patterns::Double(0., 1e7));
+    prm.add_parameter("Shaft bore pressure",
+                      shaft_bore_pressure,
+                      "Pressure in MPa on the bore of a hollow shaft in "
+                      "operation (pushes the shaft against the hub). "
+                      "Allowed: 0 to 1e4; needs Geometry/Shaft bore "
+                      "diameter > 0 unless 0.",
+                      Patterns::Double(0., 1e4));
+    prm.add_parameter("Hub outer pressure",
+                      hub_outer_pressure,
+                      "Pressure in MPa on the outer surface of the hub in "
+                      "operation (pushes the hub onto the shaft). Allowed: "
+                      "0 to 1e4.",
+                      Patterns::Double(0., 1e4));
+    prm.add_parameter("Joining clearance",
+                      joining_clearance_text,
+                      "Diametral clearance in mm that a shrink or expansion "
+                      "fit needs while it is joined (DIN 7190's joining "
+                      "clearance), for the joining temperatures: heat the "
+                      "hub or cool the shaft until the largest interference "
+                      "plus this clearance is gone. auto: 0.001 D_F, DIN "
+                      "7190's guide value. Allowed: auto or 0 <= clearance "
+                      "<= 0.1 D_F.",
+                      Patterns::Anything());
+    prm.leave_subsection();
+  }
+
+
+
+  double
+  OperationParameters::shaft_temperature() const
+  {
+    return temperature(shaft_temperature_text, assembly_temperature);
+  }
+
+
+
+  double
+  OperationParameters::hub_temperature() const
+  {
+    return temperature(hub_temperature_text, assembly_temperature);
+  }
+
+
+
+  double
+  OperationParameters::omega() const
+  {
+    return 2. * M_PI * speed / 60.;
+  }
+
+
+
+  double
+  OperationParameters::joining_clearance(const double joint_diameter) const
+  {
+    const auto first = joining_clearance_text.find_first_not_of(" \t");
+    if (first == std::string::npos
+        || joining_clearance_text.compare(first, 4, "auto") == 0)
+      return 1e-3 * joint_diameter;
+    return parse_number(joining_clearance_text);
+  }
+
+
+
+  bool
+  OperationParameters::has_loads() const
+  {
+    return shaft_temperature() != assembly_temperature
+           || hub_temperature() != assembly_temperature || speed > 0.
+           || shaft_bore_pressure > 0. || hub_outer_pressure > 0.;
+  }
+
+
+
+  void
+  OperationParameters::validate(const double joint_diameter,
+                                const bool   solid_shaft) const
+  {
+    check_temperature(shaft_temperature(),
+                      shaft_temperature_text,
+                      "Operation/Shaft temperature");
+    check_temperature(hub_temperature(),
+                      hub_temperature_text,
+                      "Operation/Hub temperature");
+    const double clearance = joining_clearance(joint_diameter);
+    if (std::isnan(clearance))
+      throw InputError("parameter Operation/Joining clearance = '"
+                       + joining_clearance_text
+                       + "' is not a clearance: allowed is auto or a number "
+                         "of mm from 0 to 0.1 D_F.");
+    require(clearance >= 0. && clearance <= 0.1 * joint_diameter,
+            "Operation/Joining clearance",
+            clearance,
+            "auto or 0 <= clearance <= 0.1 D_F (D_F = " + number(joint_diameter)
+              + " mm)");
+    if (solid_shaft && shaft_bore_pressure > 0.)
+      throw InputError("parameter Operation/Shaft bore pressure = "
+                       + number(shaft_bore_pressure)
+                       + " MPa needs a bore: Geometry/Shaft bore diameter is "
+                         "0 (a solid shaft); allowed is 0 for a solid shaft.");
+  }
+} // namespace coaxfit

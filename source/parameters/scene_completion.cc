@@ -1,0 +1,129 @@
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/parameters/iso286.h>
+#include <coaxfit/parameters/material_library.h>
+#include <coaxfit/parameters/parameter_checks.h>
+#include <coaxfit/parameters/parameters.h>
+
+#include <cmath>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /**
+     * Fill the entries of @p material that @p missing lists (E, nu) or that
+     * are unknown (0) from its Name; drop E and nu from @p missing.
+     */
+    void
+    fill_material(Material              &material,
+                  const std::string     &path,
+                  std::set<std::string> &missing)
+    {
+      const MaterialData *data = find_material(material.name);
+      if (data == nullptr)
+        return;
+      // deal.II names the entries with '.' between the sections.
+      const std::string prefix = "Material." + path + ".";
+      if (missing.erase(prefix + "E") > 0)
+        material.E = data->E;
+      if (missing.erase(prefix + "nu") > 0)
+        material.nu = data->nu;
+      if (material.yield_strength == 0.)
+        material.yield_strength = data->yield_strength;
+      if (material.density == 0.)
+        material.density = data->density;
+      if (material.thermal_expansion == 0.)
+        material.thermal_expansion = data->thermal_expansion;
+    }
+
+    /** The limits of the interference: from the ISO fit or as given. */
+    FitLimits
+    fit_limits(const FitParameters &fit, const double joint_diameter)
+    {
+      FitLimits limits;
+      limits.smoothing_loss = fit.smoothing_loss();
+      limits.fit_case
+        = fit.fit_case == FitCase::all ? FitCase::mean : fit.fit_case;
+      if (fit.iso_fit.empty())
+        {
+          if (fit.fit_case != FitCase::mean)
+            throw InputError("parameter Fit/Case = " + to_string(fit.fit_case)
+                             + " needs Fit/ISO fit: with Fit/Diametral "
+                               "interference alone there is one "
+                               "interference (allowed: mean)");
+          limits.U_min = limits.U_max = fit.diametral_interference;
+          return limits;
+        }
+      const IsoFit iso   = iso_fit(fit.iso_fit, joint_diameter);
+      limits.source      = "Fit/ISO fit " + iso.name;
+      limits.iso_fit     = iso.name;
+      limits.hole_upper  = 1e-3 * iso.hole_upper;
+      limits.hole_lower  = 1e-3 * iso.hole_lower;
+      limits.shaft_upper = 1e-3 * iso.shaft_upper;
+      limits.shaft_lower = 1e-3 * iso.shaft_lower;
+      limits.U_min       = 1e-3 * iso.min_interference();
+      limits.U_max       = 1e-3 * iso.max_interference();
+      return limits;
+    }
+
+    /**
+     * Every case a run computes must stay in the linear (small strain)
+     * range; a clearance (U_w <= 0) is a state like any other.
+     */
+    void
+    check_effective_interference(const Parameters &p)
+    {
+      const double               D = p.drawing.joint_diameter;
+      const std::vector<FitCase> cases
+        = p.fit.fit_case == FitCase::all ?
+            std::vector<FitCase>{FitCase::min, FitCase::mean, FitCase::max} :
+            std::vector<FitCase>{p.fit_limits.fit_case};
+      for (const FitCase c : cases)
+        {
+          const double U   = p.fit_limits.interference(c);
+          const double U_w = U - p.fit_limits.smoothing_loss;
+          if (U_w >= -0.1 * D && U_w <= 0.1 * D
+              && (U_w == 0. || std::abs(U_w) >= 1e-9 * D))
+            continue;
+          const std::string what
+            = p.fit.iso_fit.empty() ?
+                "parameter Fit/Diametral interference = " + number(U) + " mm" :
+                "parameter Fit/ISO fit = " + p.fit_limits.iso_fit + " (case "
+                  + to_string(c) + ": U = " + number(U) + " mm)";
+          throw InputError(
+            what
+            + " gives the effective interference U_w = U - 0.8 "
+              "(Rz_shaft + Rz_hub) = "
+            + number(U_w)
+            + " mm: allowed is 0 or 1e-9 D_F <= |U_w| <= 0.1 D_F (D_F = "
+            + number(D) + " mm; negative: a clearance)");
+        }
+    }
+  } // namespace
+
+
+
+  void
+  complete_scene(Parameters &p, std::set<std::string> &missing)
+  {
+    fill_material(p.shaft, "Shaft", missing);
+    fill_material(p.hub, "Hub", missing);
+    const bool interference_given
+      = missing.count("Fit.Diametral interference") == 0;
+    if (!p.fit.iso_fit.empty())
+      {
+        missing.erase("Fit.Diametral interference");
+        if (interference_given)
+          p.read_notes.push_back("Fit/Diametral interference = "
+                                 + number(p.fit.diametral_interference)
+                                 + " mm is not used: Fit/ISO fit = "
+                                 + p.fit.iso_fit + " decides the interference");
+      }
+    if (!missing.empty())
+      return; // read_parameters() names what is missing
+    p.drawing.validate();
+    p.fit_limits = fit_limits(p.fit, p.drawing.joint_diameter);
+    check_effective_interference(p);
+    p.derive_model();
+  }
+} // namespace coaxfit

@@ -1,0 +1,238 @@
+#include <coaxfit/parameters/parameter_checks.h>
+#include <coaxfit/parameters/scene_parameters.h>
+
+namespace coaxfit
+{
+  std::string
+  to_string(const FitCase value)
+  {
+    switch (value)
+      {
+        case FitCase::min:
+          return "min";
+        case FitCase::max:
+          return "max";
+        case FitCase::all:
+          return "all";
+        default:
+          return "mean";
+      }
+  }
+
+
+
+  void
+  DrawingGeometry::declare_parameters(ParameterHandler &prm)
+  {
+    const Patterns::Double non_negative(0.);
+    const bool             required = true;
+    prm.enter_subsection("Geometry");
+    prm.add_parameter("Joint diameter",
+                      joint_diameter,
+                      "Joint diameter D_F in mm: the nominal DIAMETER of "
+                      "the shaft's seat and the hub's bore (both bodies "
+                      "are meshed at it; small strain). Required. "
+                      "Allowed: Shaft bore diameter < D_F < Hub outer "
+                      "diameter, 1e-3 to 1e5 mm.",
+                      non_negative,
+                      required);
+    prm.add_parameter("Shaft bore diameter",
+                      shaft_bore_diameter,
+                      "Bore DIAMETER D_iI of a hollow shaft in mm; 0 for a "
+                      "solid shaft. Required. Allowed: 0, or 1e-3 mm <= D_iI "
+                      "< D_F with a wall (D_F - D_iI)/2 of at least 5e-4 "
+                      "D_F.",
+                      non_negative,
+                      required);
+    prm.add_parameter("Hub outer diameter",
+                      hub_outer_diameter,
+                      "Outer DIAMETER D_aA of the hub in mm. Required. "
+                      "Allowed: 1.001 D_F <= D_aA <= 1e4 D_F (a wall of at "
+                      "least 5e-4 D_F), at most 1e5 mm.",
+                      non_negative,
+                      required);
+    prm.add_parameter("Hub length",
+                      hub_length,
+                      "FULL length of the hub in mm (the joint length l_F "
+                      "when the shaft is longer). The hub is centred on "
+                      "the shaft. Required. Allowed: 1e-4 D_F to 1e4 D_F, "
+                      "and 1e-3 to 1e5 mm.",
+                      non_negative,
+                      required);
+    prm.add_parameter("Shaft length",
+                      shaft_length,
+                      "FULL length of the shaft in mm, centred on the hub. "
+                      "Required. Allowed: 1e-4 D_F to 1e4 D_F, and 1e-3 to "
+                      "1e5 mm.",
+                      non_negative,
+                      required);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  DrawingGeometry::validate() const
+  {
+    // Absolute sizes from 1 micrometre to 100 m: every press fit, and
+    // coordinates, displacements and stresses far inside the range of the
+    // single-precision arrays of the VTU files (1e38).
+    for (const auto &[name, size] :
+         {std::pair<std::string, double>{"Geometry/Joint diameter",
+                                         joint_diameter},
+          {"Geometry/Hub outer diameter", hub_outer_diameter},
+          {"Geometry/Hub length", hub_length},
+          {"Geometry/Shaft length", shaft_length}})
+      require(size >= 1e-3 && size <= 1e5, name, size, "1e-3 to 1e5 mm");
+    require(shaft_bore_diameter == 0.
+              || (shaft_bore_diameter >= 1e-3 && shaft_bore_diameter <= 1e5),
+            "Geometry/Shaft bore diameter",
+            shaft_bore_diameter,
+            "0 (solid) or 1e-3 to 1e5 mm");
+    const double D = joint_diameter;
+    require(D > 0. && D > shaft_bore_diameter,
+            "Geometry/Joint diameter",
+            D,
+            "Shaft bore diameter < D_F < Hub outer diameter (bore "
+              + number(shaft_bore_diameter) + " mm)");
+    require(hub_outer_diameter > D,
+            "Geometry/Hub outer diameter",
+            hub_outer_diameter,
+            "D_aA > D_F (D_F = " + number(D) + " mm)");
+    // Proportions a mesh of 2D cells can represent in double precision.
+    require(hub_outer_diameter <= 1e4 * D,
+            "Geometry/Hub outer diameter",
+            hub_outer_diameter,
+            "D_F < D_aA <= 1e4 D_F");
+    // Thinner walls make the stiffness numerically singular (the bound
+    // itself allowed despite round-off in the difference).
+    const double min_wall = 5e-4 * D * (1. - 1e-9);
+    require((D - shaft_bore_diameter) / 2. >= min_wall,
+            "Geometry/Shaft bore diameter",
+            shaft_bore_diameter,
+            "a shaft wall (D_F - D_iI)/2 of at least 5e-4 D_F (D_F = "
+              + number(D) + " mm)");
+    require((hub_outer_diameter - D) / 2. >= min_wall,
+            "Geometry/Hub outer diameter",
+            hub_outer_diameter,
+            "a hub wall (D_aA - D_F)/2 of at least 5e-4 D_F (D_F = " + number(D)
+              + " mm)");
+    for (const auto &[name, length] :
+         {std::pair<std::string, double>{"Geometry/Hub length", hub_length},
+          {"Geometry/Shaft length", shaft_length}})
+      require(length > 0. && length >= 1e-4 * D && length <= 1e4 * D,
+              name,
+              length,
+              "1e-4 D_F <= length <= 1e4 D_F (D_F = " + number(D) + " mm)");
+  }
+
+
+
+  void
+  FitParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Fit");
+    prm.add_parameter("Diametral interference",
+                      diametral_interference,
+                      "Diametral interference U in mm: the shaft's "
+                      "DIAMETER exceeds the bore's by U (the radial "
+                      "interference is U/2). The model is linear (small "
+                      "strain), so U/D_F should stay well below 0.01. "
+                      "Required unless ISO fit is given. Zero or negative: a "
+                      "clearance (the parts touch only if loads of "
+                      "Operation close it). Allowed: after the smoothing "
+                      "loss, 0 or 1e-9 D_F <= |U_w| <= 0.1 D_F.",
+                      Patterns::Double(),
+                      true);
+    prm.add_parameter("ISO fit",
+                      iso_fit,
+                      "A hole-basis fit of ISO 286 such as H7/s6 (holes H5 "
+                      "to H11, shafts m to zc in grades 5 to 11, joint "
+                      "diameters over 1 up to 500 mm). When given it "
+                      "decides the interference: U_min = ei - ES, U_max = "
+                      "es - EI at the joint diameter, and Case chooses "
+                      "which. Empty: Diametral interference is used.",
+                      Patterns::Anything());
+    prm.declare_entry("Case",
+                      "mean",
+                      Patterns::Selection("mean|min|max|all"),
+                      "Which interference of the ISO fit a run uses: the "
+                      "mean, the smallest (slip: the capacity to rely on) "
+                      "or the largest (strength, press-in force); all: the "
+                      "three in one run, each in its own subdirectory "
+                      "min, mean, max of the output directory with one "
+                      "table fit_cases.csv. Needs ISO fit unless mean.");
+    prm.add_action("Case", [this](const std::string &value) {
+      fit_case = value == "min" ? FitCase::min :
+                 value == "max" ? FitCase::max :
+                 value == "all" ? FitCase::all :
+                                  FitCase::mean;
+    });
+    prm.add_parameter("Shaft roughness Rz",
+                      shaft_roughness,
+                      "Mean roughness depth Rz of the shaft's seat in "
+                      "micrometres. DIN 7190 subtracts the smoothing loss "
+                      "0.8 (Rz_shaft + Rz_hub) from the interference. "
+                      "Allowed: 0 to 1000.",
+                      Patterns::Double(0., 1000.));
+    prm.add_parameter("Hub roughness Rz",
+                      hub_roughness,
+                      "Mean roughness depth Rz of the hub's bore in "
+                      "micrometres (see Shaft roughness Rz). Allowed: 0 to "
+                      "1000.",
+                      Patterns::Double(0., 1000.));
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  DesignParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Design");
+    prm.add_parameter("Friction coefficient",
+                      friction_coefficient,
+                      "Coefficient of static friction of the joint against "
+                      "slip (DIN 7190's nu_r), for the transmissible torque "
+                      "and axial force. The default is a typical value for "
+                      "steel on steel; DIN 7190 tabulates it by pairing and "
+                      "joining method: set yours. Allowed: 1e-6 <= mu <= 1.",
+                      Patterns::Double(1e-6, 1.));
+    prm.add_parameter("Press-in friction coefficient",
+                      press_in_friction_coefficient,
+                      "Coefficient of sliding friction while the shaft is "
+                      "pressed in (DIN 7190's nu_e), for the press-in "
+                      "force of the interference in use (the largest with "
+                      "Case = max). Allowed: 1e-6 <= "
+                      "mu <= 1.",
+                      Patterns::Double(1e-6, 1.));
+    prm.add_parameter("Required torque",
+                      required_torque,
+                      "Torque the joint must transmit, in N m; with "
+                      "Required axial force it gives the safety against "
+                      "slip. 0: none. Allowed: 0 to 1e12.",
+                      Patterns::Double(0., 1e12));
+    prm.add_parameter("Required axial force",
+                      required_axial_force,
+                      "Axial force the joint must transmit, in N. 0: none. "
+                      "Allowed: 0 to 1e12.",
+                      Patterns::Double(0., 1e12));
+    prm.add_parameter("Edge distance",
+                      edge_distance,
+                      "Distance in mm from the hub's edge (where the "
+                      "stresses are singular) within which the maxima of "
+                      "the stresses along the hub bore and the shaft "
+                      "surface are not taken. 0: 5 % of the joint length "
+                      "l_F (the shorter of hub and shaft). Allowed: 0 <= "
+                      "distance < l_F / 2.",
+                      Patterns::Double(0., 1e9));
+    prm.add_parameter("Corner trend",
+                      corner_trend,
+                      "With Mesh/Global refinements >= 1: solve the case "
+                      "once more on the mesh one refinement coarser, to "
+                      "show how the stresses at the end of the joint (a "
+                      "singular corner) grow with refinement. Reported "
+                      "next to the corner values, never a design figure.");
+    prm.leave_subsection();
+  }
+} // namespace coaxfit

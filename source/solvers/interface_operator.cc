@@ -1,0 +1,30 @@
+#include <coaxfit/solvers/interface_operator.h>
+
+namespace coaxfit
+{
+  void
+  InterfaceOperator::solve_neumann(const Vector<double> &force,
+                                   Vector<double>       &u_r)
+  {
+    Vector<double> force_out;
+    solve(std::vector<bool>(force.size(), false),
+          Vector<double>(force.size()),
+          force,
+          u_r,
+          force_out);
+  }
+
+
+
+  void
+  InterfaceOperator::solve_dirichlet(const Vector<double> &u_r,
+                                     Vector<double>       &force)
+  {
+    Vector<double> u_r_out;
+    solve(std::vector<bool>(u_r.size(), true),
+          u_r,
+          Vector<double>(u_r.size()),
+          u_r_out,
+          force);
+  }
+} // namespace coaxfit

@@ -20,7 +20,8 @@
 // AMG on a thin tube it cannot serve: exit 2 within seconds, one line.
 // Minor: contact states touching and tension, a sweep over Fit/Case on a
 // file with Case = all, the output directory of a .json file, a huge
-// interference named as given, a joining temperature above 350 C flagged.
+// interference named as given, a joining temperature above 350 C flagged,
+// the yield safety of a part that lost contact printed as infinite.
 
 #include <deal.II/lac/vector.h>
 
@@ -340,6 +341,14 @@ main()
       std::cout << label << ": exit code " << r.exit_code << ", contact state "
                 << summary["contact"]["state"] << '\n';
     }
+  r = shell(exe
+            + " --set 'Fit/Diametral interference=-0.1' --set "
+              "'Material/Hub/Yield strength=300' --set 'Material/Shaft/"
+              "Yield strength=300' --set 'Mesh/Global refinements=0' "
+              "--set Output/Directory=runs/lost "
+            + defaults + " | grep 'safety against yield, hub'");
+  std::cout << "contact lost, safety against yield of the hub (FE, DIN):"
+            << r.message.substr(r.message.find("hub") + 3);
   r = shell(exe
             + " --quiet --sweep 'Fit/Case=min,max' --set "
               "Output/Directory=runs/cases "

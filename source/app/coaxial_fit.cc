@@ -460,6 +460,32 @@ namespace coaxfit
           << ", |dp|/p = " << coupling->traction_residual() << ")";
         list.push_back(w.str());
       }
+    // A joint that opens over part of its length: the pressure is zero
+    // there, which the FE capacity counts and DIN 7190's uniform pressure
+    // does not.
+    const UnilateralActiveSet &set = coupling->get_active_set();
+    if (set.enabled() && set.n_separated() > 0
+        && set.n_separated() < interface->n_points())
+      {
+        const double       length = parameters.geometry.contact_length();
+        const auto         zones  = set.separated_zones(interface->z(), length);
+        double             open   = 0.;
+        std::ostringstream w;
+        w << std::setprecision(4) << "the joint opens over ";
+        std::ostringstream where;
+        where << std::setprecision(4);
+        for (const auto &zone : zones)
+          {
+            open += zone.second - zone.first;
+            where << (where.tellp() > 0 ? ", " : "") << zone.first << " to "
+                  << zone.second;
+          }
+        w << open << " mm of the " << length
+          << " mm half length (z = " << where.str()
+          << " mm): no contact pressure there; the FE capacity counts only "
+             "the closed part, DIN 7190's uniform pressure assumes it closed";
+        list.push_back(w.str());
+      }
     if (!parameters.contact.unilateral && pressure.min < 0.)
       {
         std::ostringstream w;

@@ -51,6 +51,8 @@ namespace coaxfit
   std::string
   design_figure(const double value)
   {
+    if (std::isinf(value) && value > 0.)
+      return "infinite"; // a safety of an unloaded part
     if (!std::isfinite(value))
       return "-";
     std::ostringstream s;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace coaxfit
@@ -12,6 +13,10 @@ namespace coaxfit
     double
     safety(const double strength, const double stress)
     {
+      // A stress at round-off (contact lost, no loads) leaves the part
+      // unloaded: an infinite safety, not 1e12.
+      if (strength > 0. && stress >= 0. && stress <= 1e-9 * strength)
+        return std::numeric_limits<double>::infinity();
       return strength > 0. && stress > 0. ? strength / stress :
                                             FitDesign::unknown;
     }

@@ -93,6 +93,13 @@ namespace coaxfit
              + predicted_dofs(hub_geometry(parameters), degree);
     }
 
+    /** The interface points: the hub's points along its bore. */
+    double
+    interface_points(const Parameters &parameters)
+    {
+      return predicted_axial_points(hub_geometry(parameters),
+                                    parameters.mesh.degree);
+    }
   } // namespace
 
 
@@ -107,8 +114,7 @@ namespace coaxfit
     // resident size of prm/default.prm with 1 radial cell, grading 1 and
     // 4001, 8001, 12001 interface points: 1.15, 3.50, 7.29 GB, i.e. 48
     // bytes per (interface points)^2 beyond the sparse part; 50 taken.
-    const double n_S = predicted_axial_points(hub_geometry(parameters),
-                                              parameters.mesh.degree);
+    const double n_S = interface_points(parameters);
     return estimated_memory(run_dofs(parameters), parameters.mesh.degree)
            + (parameters.solver.method == SolverMethod::monolithic ?
                 0. :
@@ -167,8 +173,7 @@ namespace coaxfit
       "parameter Mesh/Global refinements = "
       + std::to_string(parameters.mesh.global_refinements) + ": the run has "
       + std::to_string(n_dofs) + " DoFs and "
-      + std::to_string(static_cast<std::size_t>(
-        predicted_axial_points(hub_geometry(parameters), degree)))
+      + std::to_string(static_cast<std::size_t>(interface_points(parameters)))
       + " interface points; with " + solver + " it needs about "
       + gigabytes(needed) + " of memory, more than " + where
       + "; use fewer Global refinements or Axial/Radial cells (the memory "

@@ -59,10 +59,7 @@ namespace coaxfit
           ;
         const int                   signal = number;
         std::lock_guard<std::mutex> lock(mutex());
-        std::string                 message = "coaxfit: interrupted by ";
-        message += (signal == SIGINT  ? "SIGINT" :
-                    signal == SIGTERM ? "SIGTERM" :
-                                        "SIGHUP");
+        std::string                 message = interrupted_line(signal);
         // Running cases end first, each removing its own staging.
         for (const int child : children)
           ::kill(child, signal);

@@ -1,6 +1,7 @@
 #ifndef coaxfit_interruption_h
 #define coaxfit_interruption_h
 
+#include <csignal>
 #include <mutex>
 #include <string>
 
@@ -24,6 +25,19 @@ namespace coaxfit
    */
   namespace Interruption
   {
+    /**
+     * The line printed when @p signal (SIGINT, SIGTERM or SIGHUP) ends the
+     * process, without its newline; a string literal, so that the
+     * launcher's async-signal-safe handler can write it too.
+     */
+    constexpr const char *
+    interrupted_line(const int signal)
+    {
+      return signal == SIGINT  ? "coaxfit: interrupted by SIGINT" :
+             signal == SIGTERM ? "coaxfit: interrupted by SIGTERM" :
+                                 "coaxfit: interrupted by SIGHUP";
+    }
+
     /** Set the handlers and start the watcher (once, first in main). */
     void
     install();

@@ -4,6 +4,7 @@
 // about 0.2 s before main(); --help does not need them.
 
 #include <coaxfit/app/usage.h>
+#include <coaxfit/base/interruption.h>
 
 #include <climits>
 #include <csignal>
@@ -38,13 +39,12 @@ namespace
   extern "C" void
   interrupted_while_loading(const int signal)
   {
-    const char *text   = signal == SIGINT ? "coaxfit: interrupted by SIGINT\n" :
-                         signal == SIGTERM ? "coaxfit: interrupted by SIGTERM\n" :
-                                             "coaxfit: interrupted by SIGHUP\n";
+    const char *text   = coaxfit::Interruption::interrupted_line(signal);
     std::size_t length = 0;
     while (text[length] != '\0')
       ++length;
     (void)!::write(STDERR_FILENO, text, length);
+    (void)!::write(STDERR_FILENO, "\n", 1);
     ::_exit(128 + signal);
   }
 } // namespace

@@ -39,7 +39,9 @@ namespace
               = std::max(asymmetry, std::abs(schur(i, j) - schur(j, i)));
           }
         positive
-          = positive && -body.geometry().contact_normal() * schur(j, j) > 0.;
+          = positive
+            && -body.discretization.interface_normals()[j][0] * schur(j, j)
+                 > 0.;
       }
     std::cout << label << ": " << n << " interface points, "
               << body.n_factorizations() << " factorization" << std::endl

@@ -26,11 +26,11 @@ namespace coaxfit_test
   class Body
   {
   public:
-    Body(const std::string &,
+    Body(const std::string  &name,
          const BodyGeometry &geometry,
          const Material     &material,
          const unsigned int  degree)
-      : discretization(geometry, material, degree)
+      : discretization(name, geometry, material, degree)
     {}
 
     void

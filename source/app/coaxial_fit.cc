@@ -87,6 +87,7 @@ namespace coaxfit
   make_body(const Parameters &parameters, const bool shaft)
   {
     return std::make_unique<BodyDiscretization>(
+      shaft ? "Shaft" : "Hub",
       shaft ? shaft_geometry(parameters) : hub_geometry(parameters),
       shaft ? parameters.shaft : parameters.hub,
       parameters.mesh.degree,

@@ -21,12 +21,14 @@
 namespace coaxfit
 {
   BodyDiscretization::BodyDiscretization(
+    const std::string  &name,
     const BodyGeometry &geometry,
     const Material     &material,
     const unsigned int  degree,
     const bool          reduced_volumetric_integration,
     const BodyLoad     &load)
-    : body_geometry(geometry)
+    : body_name(name)
+    , body_geometry(geometry)
     , body_material(material)
     , reduced_volumetric_integration(reduced_volumetric_integration)
     , body_load(load)
@@ -79,7 +81,7 @@ namespace coaxfit
       const IndexSet dofs = DoFTools::extract_boundary_dofs(
         dof_handler,
         fe.component_mask(FEValuesExtractors::Scalar(component)),
-        {BoundaryId::contact});
+        {BoundaryId::joint});
       std::vector<std::pair<double, types::global_dof_index>> by_z;
       for (const auto dof : dofs)
         by_z.emplace_back(support_points[dof][1], dof);
@@ -210,20 +212,16 @@ namespace coaxfit
     // rho omega^2 in N/mm^4: kg/m^3 -> 1e-9 kg/mm^3, kg mm/s^2 = 1e-3 N.
     const double centrifugal
       = 1e-12 * body_material.density * load.omega_squared;
-    const double scale = body_geometry.r_outer;
-    // The pressure on a free face at r = r_inner or r_outer (traction
-    // along +r on the bore, along -r on the outer surface); 0 elsewhere.
+    // The pressure on a free face, selected by its boundary id: the bore
+    // carries inner_pressure, the outer surface outer_pressure (the
+    // traction -p n along the outward normal n); nothing else is loaded.
     const auto face_pressure = [&](const auto &face) {
-      if (!face->at_boundary() || face->boundary_id() == BoundaryId::contact)
+      if (!face->at_boundary())
         return 0.;
-      const double r0 = face->vertex(0)[0], r1 = face->vertex(1)[0];
-      if (body_geometry.r_inner > 0.
-          && std::abs(r0 - body_geometry.r_inner) < 1e-12 * scale
-          && std::abs(r1 - body_geometry.r_inner) < 1e-12 * scale)
+      if (face->boundary_id() == BoundaryId::bore)
         return load.inner_pressure;
-      if (std::abs(r0 - body_geometry.r_outer) < 1e-12 * scale
-          && std::abs(r1 - body_geometry.r_outer) < 1e-12 * scale)
-        return -load.outer_pressure;
+      if (face->boundary_id() == BoundaryId::outer)
+        return load.outer_pressure;
       return 0.;
     };
 
@@ -287,12 +285,21 @@ namespace coaxfit
             if (pressure == 0.)
               continue;
             face_values.reinit(cell, face);
+            const Tensor<1, 2> n
+              = outward_normal(cell, cell->face_iterator_to_index(face));
             for (const unsigned int q : face_values.quadrature_point_indices())
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                if (fe.system_to_component_index(i).first == 0)
-                  cell_rhs[i] += pressure * face_values.shape_value(i, q)
-                                 * face_values.quadrature_point(q)[0]
-                                 * face_values.JxW(q);
+              {
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  {
+                    const unsigned int c
+                      = fe.system_to_component_index(i).first;
+                    if (n[c] != 0.)
+                      cell_rhs[i] += -pressure * n[c]
+                                     * face_values.shape_value(i, q)
+                                     * face_values.quadrature_point(q)[0]
+                                     * face_values.JxW(q);
+                  }
+              }
           }
         cell->get_dof_indices(local_dof_indices);
         constraints.distribute_local_to_global(cell_rhs,
@@ -319,17 +326,32 @@ namespace coaxfit
       interface_index[interface_dofs[i]] = i;
 
     weights = 0;
+    // The outward normal at each point: that of its faces (straight faces:
+    // constant along the face); where two faces of different direction
+    // meet, their mean.
+    normals.assign(interface_dofs.size(), Tensor<1, 2>());
+    std::vector<unsigned int> n_faces(interface_dofs.size(), 0);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == BoundaryId::contact)
+        if (face->at_boundary() && face->boundary_id() == BoundaryId::joint)
           {
             cell->get_dof_indices(local_dof_indices);
             fe_face_values.reinit(cell, face);
+            const Tensor<1, 2> face_normal
+              = outward_normal(cell, cell->face_iterator_to_index(face));
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               {
                 const auto point = interface_index.find(local_dof_indices[i]);
                 if (point == interface_index.end())
                   continue;
+                Tensor<1, 2> &n = normals[point->second];
+                if (n_faces[point->second]++ == 0)
+                  n = face_normal;
+                else if ((n - face_normal).norm() > 1e-12)
+                  {
+                    n += face_normal;
+                    n /= n.norm();
+                  }
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
                   weights[point->second]
@@ -338,6 +360,12 @@ namespace coaxfit
                        * fe_face_values.JxW(q);
               }
           }
+    // The coupling exchanges u_r and radial forces: it needs joints on
+    // cylinders r = const (n = +-e_r), which is what the mesh builder makes.
+    for (const Tensor<1, 2> &n : normals)
+      if (std::abs(n[1]) > 1e-12 || std::abs(std::abs(n[0]) - 1.) > 1e-12)
+        throw std::logic_error("the joint of a body is not a cylinder "
+                               "r = const");
   }
 
 
@@ -349,8 +377,7 @@ namespace coaxfit
                                        Vector<double>          &u_r,
                                        Vector<double>          &force_out) const
   {
-    const auto  &dofs   = interface_dofs;
-    const double normal = body_geometry.contact_normal();
+    const auto &dofs = interface_dofs;
 
     // Reactions: the rows of K u - f (f = 0 at a prescribed point).
     Vector<double> residual(n_dofs());
@@ -359,8 +386,9 @@ namespace coaxfit
     force_out.reinit(dofs.size());
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
-        u_r[i]       = solution[dofs[i]];
-        force_out[i] = prescribed[i] ? normal * residual[dofs[i]] : force[i];
+        u_r[i] = solution[dofs[i]];
+        force_out[i]
+          = prescribed[i] ? normals[i][0] * residual[dofs[i]] : force[i];
       }
   }
 

@@ -137,6 +137,49 @@ namespace coaxfit
 
 
 
+  const char *
+  BoundaryId::name(const types::boundary_id id)
+  {
+    switch (id)
+      {
+        case axis:
+          return "axis";
+        case symmetry:
+          return "symmetry";
+        case joint:
+          return "joint";
+        case bore:
+          return "bore";
+        case outer:
+          return "outer";
+        case end:
+          return "end";
+        default:
+          return "untagged";
+      }
+  }
+
+
+
+  Tensor<1, 2>
+  outward_normal(const Triangulation<2>::cell_iterator &cell,
+                 const unsigned int                     face)
+  {
+    const Tensor<1, 2> t
+      = cell->face(face)->vertex(1) - cell->face(face)->vertex(0);
+    // Component by component (Tensor's /= multiplies by the reciprocal,
+    // which leaves h * (1/h) != 1).
+    const double length = std::sqrt(t[0] * t[0] + t[1] * t[1]);
+    Tensor<1, 2> n;
+    n[0] = t[1] / length;
+    n[1] = -t[0] / length;
+    if (n * (cell->face(face)->center() - cell->center()) < 0.)
+      n *= -1.;
+    return n;
+  }
+
+
+
   void
   make_body_mesh(Triangulation<2> &triangulation, const BodyGeometry &geometry)
   {
@@ -148,6 +191,7 @@ namespace coaxfit
                                                        geometry.length),
                                               false);
 
+    // The only place that tells faces apart by their coordinates.
     const double tol = 1e-10 * std::max(geometry.r_outer, geometry.length);
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
@@ -160,9 +204,13 @@ namespace coaxfit
               face->set_boundary_id(BoundaryId::axis);
             else if (std::abs(c[0] - geometry.contact_radius()) < tol
                      && c[1] < geometry.contact_length)
-              face->set_boundary_id(BoundaryId::contact);
+              face->set_boundary_id(BoundaryId::joint);
+            else if (std::abs(c[1] - geometry.length) < tol)
+              face->set_boundary_id(BoundaryId::end);
+            else if (std::abs(c[0] - geometry.r_inner) < tol)
+              face->set_boundary_id(BoundaryId::bore);
             else
-              face->set_boundary_id(BoundaryId::free);
+              face->set_boundary_id(BoundaryId::outer);
           }
 
     triangulation.refine_global(geometry.global_refinements);

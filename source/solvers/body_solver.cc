@@ -110,10 +110,9 @@ namespace coaxfit
         message << std::setprecision(2)
                 << "Solver/Linear solver = amg: conjugate gradients with "
                    "the AMG preconditioner did not reach the relative "
-                   "residual 1e-12 on the "
-                << (body.geometry().contact_at_outer_radius ? "shaft" : "hub")
-                << " in " << e.last_step << " iterations (reached "
-                << e.last_residual / norm
+                   "residual 1e-12 on the body "
+                << body.name() << " in " << e.last_step
+                << " iterations (reached " << e.last_residual / norm
                 << "); this mesh (thin walls, cells of large aspect ratio) "
                    "is beyond what the AMG path serves: use Solver/Linear "
                    "solver = direct, or Axial/Radial cells closer to the "
@@ -144,7 +143,7 @@ namespace coaxfit
   {
     const auto                 &dofs   = body.get_interface_dofs();
     const SparseMatrix<double> &K      = body.get_stiffness_matrix();
-    const double                normal = body.geometry().contact_normal();
+    const auto                 &normal = body.interface_normals();
     AssertDimension(prescribed.size(), dofs.size());
 
     // Contact forces act against the outward normal; prescribed points
@@ -159,7 +158,7 @@ namespace coaxfit
           any_prescribed = true;
         }
       else
-        rhs[dofs[i]] = -normal * force[i];
+        rhs[dofs[i]] = -normal[i][0] * force[i];
     if (any_prescribed)
       {
         Vector<double> K_lift(body.n_dofs());
@@ -215,7 +214,10 @@ namespace coaxfit
                            "solver (Solver/Linear solver = direct)"));
     const std::vector<bool> none(body.n_interface_points(), false);
     cholesky.trailing_inverse(factorization(none), compliance);
-    // A unit contact force at point j is the load -normal e_j.
-    compliance *= -body.geometry().contact_normal();
+    // A unit contact force at point j is the load -n_j e_j (n_j = +-e_r).
+    const auto &normal = body.interface_normals();
+    for (unsigned int i = 0; i < compliance.m(); ++i)
+      for (unsigned int j = 0; j < compliance.n(); ++j)
+        compliance(i, j) *= -normal[j][0];
   }
 } // namespace coaxfit

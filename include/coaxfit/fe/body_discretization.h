@@ -68,12 +68,19 @@ namespace coaxfit
      * 2 mu part with p + 1 points. The body carries @p load (its
      * thermal strain enters the stresses of every field it writes).
      */
-    BodyDiscretization(const BodyGeometry &geometry,
+    BodyDiscretization(const std::string  &name,
+                       const BodyGeometry &geometry,
                        const Material     &material,
                        unsigned int        degree,
                        bool            reduced_volumetric_integration = false,
                        const BodyLoad &load = BodyLoad());
 
+    /** The body's name as the parameter file spells it ("Shaft", "Hub"). */
+    const std::string &
+    name() const
+    {
+      return body_name;
+    }
     /** Build the mesh, distribute DoFs, set constraints and sparsity. */
     void
     setup_system();
@@ -165,6 +172,17 @@ namespace coaxfit
       return weights;
     }
 
+    /**
+     * The body's outward unit normal at each interface point, from the
+     * faces tagged BoundaryId::joint. Contact forces act along -n; the
+     * interface displacement is u_r (joints of this version lie on
+     * cylinders r = const, where n = +-e_r).
+     */
+    const std::vector<Tensor<1, 2>> &
+    interface_normals() const
+    {
+      return normals;
+    }
     /** The DoF of u_r at each interface point. */
     const std::vector<types::global_dof_index> &
     get_interface_dofs() const
@@ -255,6 +273,7 @@ namespace coaxfit
                      DoFHandler<2>        &dof_handler_out,
                      Vector<double>       &field) const;
 
+    const std::string  body_name;
     const BodyGeometry body_geometry;
     const Material     body_material;
     const bool         reduced_volumetric_integration;
@@ -271,6 +290,7 @@ namespace coaxfit
     std::vector<types::global_dof_index> interface_axial_dofs;
     std::vector<double>                  interface_z_coordinates;
     Vector<double>                       weights;
+    std::vector<Tensor<1, 2>>            normals;
   };
 } // namespace coaxfit
 

@@ -1,6 +1,7 @@
 #ifndef coaxfit_mesh_h
 #define coaxfit_mesh_h
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 
 #include <cstddef>
@@ -11,14 +12,25 @@ namespace coaxfit
 {
   using namespace dealii;
 
-  /** Boundary ids of a body's (r, z) half section. */
+  /**
+   * Boundary ids of a body's (r, z) half section, set by the mesh builder
+   * (make_body_mesh) and nowhere else: constraints, loads, the joint and the
+   * output select faces by these ids and take directions from the face
+   * normals, never from coordinates.
+   */
   namespace BoundaryId
   {
     constexpr types::boundary_id axis     = 0; ///< r = 0: u_r = 0
     constexpr types::boundary_id symmetry = 1; ///< z = 0: u_z = 0
-    constexpr types::boundary_id contact  = 2; ///< S: coupling data
-    constexpr types::boundary_id free     = 3; ///< traction free
-  }                                            // namespace BoundaryId
+    constexpr types::boundary_id joint    = 2; ///< S: meets the other body
+    constexpr types::boundary_id bore     = 3; ///< free inner surface
+    constexpr types::boundary_id outer    = 4; ///< free outer surface
+    constexpr types::boundary_id end      = 5; ///< free end face
+
+    /** The name of @p id for messages and output ("joint", "bore", ...). */
+    const char *
+    name(types::boundary_id id);
+  } // namespace BoundaryId
 
   /**
    * The (r, z) half section of one cylinder, z >= 0, and how to mesh it.
@@ -46,13 +58,6 @@ namespace coaxfit
     contact_radius() const
     {
       return contact_at_outer_radius ? r_outer : r_inner;
-    }
-
-    /** Radial component of the body's outward normal on S (+1 or -1). */
-    double
-    contact_normal() const
-    {
-      return contact_at_outer_radius ? 1. : -1.;
     }
   };
 
@@ -95,8 +100,21 @@ namespace coaxfit
   predicted_axial_points(const BodyGeometry &geometry, unsigned int degree);
 
   /**
-   * Build the graded rectangular mesh of one body and set the boundary ids
-   * of BoundaryId on it, then refine globally.
+   * The outward unit normal of the straight face @p face of @p cell: the
+   * face's direction turned by 90 degrees, pointing away from the cell's
+   * centre. Exact for faces along r or z (+-1 and 0, where a mapping's
+   * normal carries round-off).
+   */
+  Tensor<1, 2>
+  outward_normal(const Triangulation<2>::cell_iterator &cell,
+                 unsigned int                           face);
+
+  /**
+   * Build the graded rectangular mesh of one body, tag its boundary with
+   * the ids of BoundaryId (the axis of a solid body, the symmetry plane, the
+   * joint S, the free bore, outer surface and end face; the part of the
+   * joint radius beyond the end of contact is free bore or outer surface),
+   * then refine globally (children inherit the ids).
    */
   void
   make_body_mesh(Triangulation<2> &triangulation, const BodyGeometry &geometry);

@@ -63,8 +63,8 @@ namespace
   std::vector<double>
   interface_eigenvalues(const Parameters &p)
   {
-    const auto shaft = make_body(p, true);
-    const auto hub   = make_body(p, false);
+    const auto shaft = make_body(p, "Shaft");
+    const auto hub   = make_body(p, "Hub");
     for (BodyDiscretization *b : {shaft.get(), hub.get()})
       {
         b->setup_system();

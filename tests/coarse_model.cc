@@ -66,7 +66,7 @@ namespace
     const ContactInterface &fi = fine.get_interface();
     const ContactInterface &ci = coarse.get_interface();
     // The model's operators are not used by the transfers.
-    auto fs = make_body(c, true), fh = make_body(c, false);
+    auto fs = make_body(c, "Shaft"), fh = make_body(c, "Hub");
     fs->setup_system();
     fh->setup_system();
     fs->assemble_system();
@@ -114,7 +114,7 @@ namespace
                                           AlphaControllerPreset::iqn_ils;
     // The bodies, their condensed operators and the interface, as a run
     // sets them up (no loads of operation).
-    auto shaft = make_body(p, true), hub = make_body(p, false);
+    auto shaft = make_body(p, "Shaft"), hub = make_body(p, "Hub");
     for (auto *body : {shaft.get(), hub.get()})
       {
         body->setup_system();

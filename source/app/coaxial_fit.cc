@@ -20,91 +20,13 @@
 
 namespace coaxfit
 {
-  namespace
-  {
-    BodyGeometry
-    common_mesh_settings(const Parameters &parameters)
-    {
-      BodyGeometry g;
-      g.contact_length     = parameters.geometry.contact_length();
-      g.axial_cells        = parameters.mesh.axial_cells;
-      g.radial_cells       = parameters.mesh.radial_cells;
-      g.grading_ratio      = parameters.mesh.grading_ratio;
-      g.global_refinements = parameters.mesh.global_refinements;
-      return g;
-    }
-  } // namespace
-
-
-
-  BodyGeometry
-  shaft_geometry(const Parameters &parameters)
-  {
-    BodyGeometry g            = common_mesh_settings(parameters);
-    g.r_inner                 = parameters.geometry.R0;
-    g.r_outer                 = parameters.geometry.R1;
-    g.length                  = parameters.geometry.L1;
-    g.contact_at_outer_radius = true;
-    return g;
-  }
-
-
-
-  BodyGeometry
-  hub_geometry(const Parameters &parameters)
-  {
-    BodyGeometry g            = common_mesh_settings(parameters);
-    g.r_inner                 = parameters.geometry.R1;
-    g.r_outer                 = parameters.geometry.R2;
-    g.length                  = parameters.geometry.L2;
-    g.contact_at_outer_radius = false;
-    return g;
-  }
-
-
-
-  BodyLoad
-  body_load(const Parameters &parameters, const bool shaft)
-  {
-    const OperationParameters &o = parameters.operation;
-    const Material            &m = shaft ? parameters.shaft : parameters.hub;
-    BodyLoad                   load;
-    load.thermal_strain
-      = m.thermal_expansion
-        * ((shaft ? o.shaft_temperature() : o.hub_temperature())
-           - o.assembly_temperature);
-    load.omega_squared = o.omega() * o.omega();
-    if (shaft)
-      load.inner_pressure = o.shaft_bore_pressure;
-    else
-      load.outer_pressure = o.hub_outer_pressure;
-    return load;
-  }
-
-
-
-  std::unique_ptr<BodyDiscretization>
-  make_body(const Parameters &parameters, const bool shaft)
-  {
-    return std::make_unique<BodyDiscretization>(
-      shaft ? "Shaft" : "Hub",
-      shaft ? shaft_geometry(parameters) : hub_geometry(parameters),
-      shaft ? parameters.shaft : parameters.hub,
-      parameters.mesh.degree,
-      parameters.mesh.reduced_volumetric_integration(),
-      body_load(parameters, shaft));
-  }
-
-
-
   CoaxialFit::CoaxialFit(const Parameters &parameters,
                          std::ostream     &out,
                          const bool        verbose)
     : parameters(parameters)
     , out(out)
     , pcout(out, verbose)
-    , shaft(make_body(parameters, true))
-    , hub(make_body(parameters, false))
+    , scene(parameters)
     , timer(out, TimerOutput::never, TimerOutput::wall_times)
   {}
 
@@ -115,15 +37,16 @@ namespace coaxfit
   {
     {
       TimerOutput::Scope scope(timer, "setup");
-      shaft->setup_system();
-      hub->setup_system();
-      shaft->assemble_system();
-      hub->assemble_system();
+      for (Body &body : scene.bodies)
+        body.discretization->setup_system();
+      for (Body &body : scene.bodies)
+        body.discretization->assemble_system();
       amg_solver = use_amg(parameters);
       if (amg_solver)
         ensure_mpi_initialized();
-      shaft_solver = std::make_unique<BodySolver>(*shaft, amg_solver);
-      hub_solver   = std::make_unique<BodySolver>(*hub, amg_solver);
+      for (Body &body : scene.bodies)
+        body.solver
+          = std::make_unique<BodySolver>(*body.discretization, amg_solver);
     }
 
     // The free body's factorization is needed by every staggered run (the
@@ -135,10 +58,12 @@ namespace coaxfit
     if (parameters.solver.method != SolverMethod::monolithic)
       {
         set_blas_threads(1);
-        TimerOutput::Scope      scope(timer, "factorization");
-        const std::vector<bool> none(shaft->n_interface_points(), false);
-        concurrently([&]() { shaft_solver->factorize(none); },
-                     [&]() { hub_solver->factorize(none); });
+        TimerOutput::Scope scope(timer, "factorization");
+        for_each_concurrently(scene.bodies, [](Body &body) {
+          body.solver->factorize(
+            std::vector<bool>(body.discretization->n_interface_points(),
+                              false));
+        });
       }
     setup_loads();
     if (parameters.solver.method == SolverMethod::monolithic)
@@ -154,31 +79,30 @@ namespace coaxfit
     // Each body's own answer to its loads of operation with a free contact
     // surface (one solve with the free body's factorization); the coupling
     // then sees the interference they leave at each point.
-    const unsigned int n = shaft->n_interface_points();
-    shaft_load_field.reinit(shaft->n_dofs());
-    hub_load_field.reinit(hub->n_dofs());
-    if (shaft->load().any() || hub->load().any())
+    bool any_load = false;
+    for (Body &body : scene.bodies)
+      {
+        body.load_field.reinit(body.discretization->n_dofs());
+        any_load = any_load || body.discretization->load().any();
+      }
+    if (any_load)
       {
         TimerOutput::Scope scope(timer, "loads");
         set_blas_threads(1);
-        concurrently(
-          [&]() {
-            shaft_load_field = shaft_solver->solve_load_field(
-              shaft->assemble_load_vector(shaft->load()));
-          },
-          [&]() {
-            hub_load_field = hub_solver->solve_load_field(
-              hub->assemble_load_vector(hub->load()));
-          });
+        for_each_concurrently(scene.bodies, [](Body &body) {
+          const BodyDiscretization &d = *body.discretization;
+          body.load_field
+            = body.solver->solve_load_field(d.assemble_load_vector(d.load()));
+        });
       }
-    Vector<double> u1(n), u2(n);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        u1[i] = shaft_load_field[shaft->get_interface_dofs()[i]];
-        u2[i] = hub_load_field[hub->get_interface_dofs()[i]];
-      }
+    const JointSides &joint = scene.joints[0];
+    const Body       &inner = scene.inner(joint), &outer = scene.outer(joint);
     interface = std::make_unique<ContactInterface>(
-      *shaft, *hub, parameters.geometry.d, u1, u2);
+      *inner.discretization,
+      *outer.discretization,
+      joint.interference,
+      inner.discretization->interface_radial_values(inner.load_field),
+      outer.discretization->interface_radial_values(outer.load_field));
   }
 
 
@@ -188,23 +112,25 @@ namespace coaxfit
                           const bool              unilateral,
                           const bool              start_from_coarse)
   {
+    const JointSides &joint = scene.joints[0];
+    Body &inner = scene.bodies[joint.inner], &outer = scene.bodies[joint.outer];
     if (parameters.solver.method == SolverMethod::monolithic)
       return std::make_unique<MonolithicSolver>(
-        *shaft,
-        *hub,
+        *inner.discretization,
+        *outer.discretization,
         contact,
         UnilateralActiveSet(contact.n_points(),
                             unilateral,
                             UnilateralActiveSet::Update::when_converged),
         parameters.coupling.max_steps);
 
-    InterfaceOperator *shaft_operator = shaft_solver.get();
-    InterfaceOperator *hub_operator   = hub_solver.get();
+    InterfaceOperator *inner_operator = inner.solver.get();
+    InterfaceOperator *outer_operator = outer.solver.get();
     if (use_condensed_operator())
       {
         condense();
-        shaft_operator = condensed_shaft.get();
-        hub_operator   = condensed_hub.get();
+        inner_operator = inner.condensed.get();
+        outer_operator = outer.condensed.get();
       }
     // Timed on its own for the main solve only: the analysis of operation
     // times its solvers as a whole.
@@ -228,10 +154,10 @@ namespace coaxfit
         + std::to_string(contact.n_points())
         + ". Use auto (iqn-ils there) or iqn-ils.");
     auto staggered = std::make_unique<StaggeredCoupling>(
-      *shaft_solver,
-      *hub_solver,
-      *shaft_operator,
-      *hub_operator,
+      *inner.solver,
+      *outer.solver,
+      *inner_operator,
+      *outer_operator,
       contact,
       coupling,
       UnilateralActiveSet(contact.n_points(), unilateral, active_set_mode()),
@@ -250,17 +176,16 @@ namespace coaxfit
   void
   CoaxialFit::condense()
   {
-    if (!condensed_shaft)
-      {
-        TimerOutput::Scope scope(timer, "condensation");
-        concurrently(
-          [&]() {
-            condensed_shaft = std::make_unique<CondensedBody>(*shaft_solver);
-          },
-          [&]() {
-            condensed_hub = std::make_unique<CondensedBody>(*hub_solver);
-          });
-      }
+    bool all_condensed = true;
+    for (const Body &body : scene.bodies)
+      all_condensed = all_condensed && body.condensed;
+    if (all_condensed)
+      return;
+    TimerOutput::Scope scope(timer, "condensation");
+    for_each_concurrently(scene.bodies, [](Body &body) {
+      if (!body.condensed)
+        body.condensed = std::make_unique<CondensedBody>(*body.solver);
+    });
   }
 
 
@@ -268,12 +193,16 @@ namespace coaxfit
   std::array<ShortWaveCompliance, 2>
   CoaxialFit::short_wave_compliances() const
   {
-    const GeometryParameters &g = parameters.geometry;
-    return {{{parameters.shaft.E,
-              parameters.shaft.nu,
-              g.R1,
-              g.R0 > 0. ? g.R1 - g.R0 : 0.},
-             {parameters.hub.E, parameters.hub.nu, g.R1, g.R2 - g.R1}}};
+    // E, nu, the joint radius and the wall thickness (0: solid) of a side.
+    const auto side = [&](const unsigned int body) {
+      const BodyDiscretization &d = *scene.bodies[body].discretization;
+      const BodyGeometry       &g = d.geometry();
+      return ShortWaveCompliance{d.material().E,
+                                 d.material().nu,
+                                 g.contact_radius(),
+                                 g.r_inner > 0. ? g.r_outer - g.r_inner : 0.};
+    };
+    return {{side(scene.joints[0].inner), side(scene.joints[0].outer)}};
   }
 
 
@@ -327,12 +256,14 @@ namespace coaxfit
         || !CoarseInterfaceModel::nested(*coarse_twin->interface, contact))
       return nullptr;
     coarse_twin->condense();
-    return std::make_unique<CoarseInterfaceModel>(*coarse_twin->condensed_shaft,
-                                                  *coarse_twin->condensed_hub,
-                                                  *coarse_twin->interface,
-                                                  contact,
-                                                  short_wave_compliances(),
-                                                  parameters.mesh.degree);
+    const Scene &coarse = coarse_twin->scene;
+    return std::make_unique<CoarseInterfaceModel>(
+      *coarse.inner(coarse.joints[0]).condensed,
+      *coarse.outer(coarse.joints[0]).condensed,
+      *coarse_twin->interface,
+      contact,
+      short_wave_compliances(),
+      parameters.mesh.degree);
   }
 
 
@@ -342,19 +273,22 @@ namespace coaxfit
   {
     coupling = make_solver(*interface, parameters.contact.unilateral, true);
     TimerOutput::Scope scope(timer, "coupling");
-    const bool         converged     = coupling->run(progress);
-    std::tie(shaft_field, hub_field) = coupling->solve_fields();
+    const bool         converged = coupling->run(progress);
     // The contact answer plus each body's answer to its own loads.
-    shaft_field += shaft_load_field;
-    hub_field += hub_load_field;
+    const JointSides &joint = scene.joints[0];
+    fields.resize(scene.bodies.size());
+    std::tie(fields[joint.inner], fields[joint.outer])
+      = coupling->solve_fields();
+    for (unsigned int b = 0; b < scene.bodies.size(); ++b)
+      fields[b] += scene.bodies[b].load_field;
     // The work of this state, before the analysis of operation adds more.
     statistics = coupling->statistics();
     if (amg_solver)
       {
         statistics.linear_solver = "amg";
-        statistics.solves["shaft_cg_iterations"]
-          = shaft_solver->n_cg_iterations();
-        statistics.solves["hub_cg_iterations"] = hub_solver->n_cg_iterations();
+        for (const Body &body : scene.bodies)
+          statistics.solves[body.key() + "_cg_iterations"]
+            = body.solver->n_cg_iterations();
       }
     return converged;
   }
@@ -366,7 +300,12 @@ namespace coaxfit
                                 const bool            unilateral)
   {
     const Vector<double>   zero(interference.size());
-    const ContactInterface contact(*shaft, *hub, 0., interference, zero);
+    const JointSides      &joint = scene.joints[0];
+    const ContactInterface contact(*scene.inner(joint).discretization,
+                                   *scene.outer(joint).discretization,
+                                   0.,
+                                   interference,
+                                   zero);
     const auto             solver = make_solver(contact, unilateral);
     if (!solver->run(nullptr))
       throw SolverError("a solve of the operating analysis did not converge "
@@ -378,22 +317,18 @@ namespace coaxfit
 
 
   Vector<double>
-  CoaxialFit::interference_change(const BodyLoad &shaft_load,
-                                  const BodyLoad &hub_load)
+  CoaxialFit::interference_change(const std::vector<BodyLoad> &loads)
   {
-    Vector<double> u1, u2;
-    concurrently(
-      [&]() {
-        u1 = shaft_solver->solve_load_field(
-          shaft->assemble_load_vector(shaft_load));
-      },
-      [&]() {
-        u2 = hub_solver->solve_load_field(hub->assemble_load_vector(hub_load));
-      });
-    Vector<double> change(interface->n_points());
-    for (unsigned int i = 0; i < change.size(); ++i)
-      change[i]
-        = u1[shaft->get_interface_dofs()[i]] - u2[hub->get_interface_dofs()[i]];
+    AssertDimension(loads.size(), scene.bodies.size());
+    std::vector<Vector<double>> u_r(scene.bodies.size());
+    for_each_concurrently(scene.bodies, [&](Body &body) {
+      const unsigned int        b = &body - scene.bodies.data();
+      const BodyDiscretization &d = *body.discretization;
+      u_r[b]                      = d.interface_radial_values(
+        body.solver->solve_load_field(d.assemble_load_vector(loads[b])));
+    });
+    Vector<double> change(u_r[scene.joints[0].inner]);
+    change -= u_r[scene.joints[0].outer];
     return change;
   }
 
@@ -402,11 +337,12 @@ namespace coaxfit
   FitDesign
   CoaxialFit::state_design() const
   {
+    const JointSides &joint = scene.joints[0];
     return FitDesign(parameters,
-                     *shaft,
-                     shaft_field,
-                     *hub,
-                     hub_field,
+                     *scene.inner(joint).discretization,
+                     fields[joint.inner],
+                     *scene.outer(joint).discretization,
+                     fields[joint.outer],
                      coupling->contact_force());
   }
 
@@ -552,12 +488,7 @@ namespace coaxfit
   {
     const PressureSummary pressure = pressure_summary();
     const Complementarity complementarity(*interface, *coupling);
-    design = std::make_unique<FitDesign>(parameters,
-                                         *shaft,
-                                         shaft_field,
-                                         *hub,
-                                         hub_field,
-                                         coupling->contact_force());
+    design = std::make_unique<FitDesign>(state_design());
     if (parameters.design.corner_trend
         && parameters.mesh.global_refinements > 0)
       {
@@ -585,10 +516,8 @@ namespace coaxfit
 
     std::map<std::string, double> timing;
     const RunResults              results{parameters,
-                             *shaft,
-                             *hub,
-                             shaft_field,
-                             hub_field,
+                             scene,
+                             fields,
                              *interface,
                              *coupling,
                              statistics,
@@ -603,7 +532,8 @@ namespace coaxfit
       TimerOutput::Scope scope(timer, "output");
       // The files are independent (each writer its own), except the
       // report, which shows the plots that exist: it comes last.
-      const auto writers = make_result_writers(parameters.output);
+      const auto writers
+        = make_result_writers(parameters.output, Scene::body_keys(parameters));
       lines.resize(writers.size());
       std::vector<std::function<void()>> jobs;
       for (unsigned int i = 0; i < writers.size(); ++i)
@@ -674,13 +604,7 @@ namespace coaxfit
     // available; the run itself is unaffected.
     if (twin_state == TwinState::failed)
       return {};
-    CoaxialFit         &fit = *coarse_twin;
-    const FitDesign     coarse_design(coarse,
-                                  *fit.shaft,
-                                  fit.shaft_field,
-                                  *fit.hub,
-                                  fit.hub_field,
-                                  fit.coupling->contact_force());
+    const FitDesign     coarse_design = coarse_twin->state_design();
     std::vector<double> values;
     for (const FitDesign::SurfaceMaximum &m : coarse_design.surface_maxima)
       values.push_back(m.corner);
@@ -768,8 +692,7 @@ namespace coaxfit
     parameters = other;
     // The timings of this case are its own (the setup was shared).
     timer.reset();
-    shaft->set_load(body_load(parameters, true));
-    hub->set_load(body_load(parameters, false));
+    scene.set_loads(parameters);
     coupling.reset();
     design.reset();
     twin_state = TwinState::stale;
@@ -783,10 +706,11 @@ namespace coaxfit
   {
     if (!is_set_up)
       setup_system();
-    pcout << "coaxfit: case " << parameters.case_name << '\n'
-          << "  shaft: " << shaft->n_cells() << " cells, " << shaft->n_dofs()
-          << " DoFs;  hub: " << hub->n_cells() << " cells, " << hub->n_dofs()
-          << " DoFs;  " << interface->n_points() << " interface points, FE_Q("
+    pcout << "coaxfit: case " << parameters.case_name << '\n';
+    for (const Body &body : scene.bodies)
+      pcout << "  " << body.key() << ": " << body.discretization->n_cells()
+            << " cells, " << body.discretization->n_dofs() << " DoFs;";
+    pcout << "  " << interface->n_points() << " interface points, FE_Q("
           << parameters.mesh.degree << ")\n";
     const bool converged = solve(pcout.is_active() ? &out : nullptr);
     output_results(directory);

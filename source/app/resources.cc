@@ -89,15 +89,17 @@ namespace coaxfit
     run_dofs(const Parameters &parameters)
     {
       const unsigned int degree = parameters.mesh.degree;
-      return predicted_dofs(shaft_geometry(parameters), degree)
-             + predicted_dofs(hub_geometry(parameters), degree);
+      std::size_t        dofs   = 0;
+      for (const std::string &name : Scene::body_names(parameters))
+        dofs += predicted_dofs(body_geometry(parameters, name), degree);
+      return dofs;
     }
 
     /** The interface points: the hub's points along its bore. */
     double
     interface_points(const Parameters &parameters)
     {
-      return predicted_axial_points(hub_geometry(parameters),
+      return predicted_axial_points(body_geometry(parameters, "Hub"),
                                     parameters.mesh.degree);
     }
   } // namespace

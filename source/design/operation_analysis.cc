@@ -142,15 +142,18 @@ namespace coaxfit
 
     // The interference at rest under the other loads, and its change per
     // (rad/s)^2, from free-body solves.
-    BodyLoad shaft_static      = body_load(parameters, true);
-    BodyLoad hub_static        = body_load(parameters, false);
-    shaft_static.omega_squared = hub_static.omega_squared = 0.;
-    BodyLoad unit_rotation;
-    unit_rotation.omega_squared = 1.;
-    Vector<double> at_rest = fit.interference_change(shaft_static, hub_static);
+    std::vector<BodyLoad> static_loads, unit_rotation;
+    for (const std::string &name : Scene::body_names(parameters))
+      {
+        static_loads.push_back(body_load(parameters, name));
+        static_loads.back().omega_squared = 0.;
+        unit_rotation.emplace_back();
+        unit_rotation.back().omega_squared = 1.;
+      }
+    Vector<double> at_rest = fit.interference_change(static_loads);
     at_rest.add(parameters.geometry.d);
     const Vector<double> per_omega_squared
-      = fit.interference_change(unit_rotation, unit_rotation);
+      = fit.interference_change(unit_rotation);
     const unsigned int n = at_rest.size();
 
     // Whole joint: every d_i <= 0.

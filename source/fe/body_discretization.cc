@@ -95,9 +95,11 @@ namespace coaxfit
     interface_dofs.clear();
     interface_axial_dofs.clear();
     interface_z_coordinates.clear();
+    points.clear();
     for (unsigned int i = 0; i < radial.size(); ++i)
       {
         interface_z_coordinates.push_back(radial[i].first);
+        points.push_back(support_points[radial[i].second]);
         interface_dofs.push_back(radial[i].second);
         interface_axial_dofs.push_back(axial[i].second);
       }

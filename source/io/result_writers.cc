@@ -51,7 +51,8 @@ namespace coaxfit
 
 
   std::vector<std::unique_ptr<ResultWriter>>
-  make_result_writers(const OutputParameters &output)
+  make_result_writers(const OutputParameters         &output,
+                      const std::vector<std::string> &body_keys)
   {
     std::vector<std::unique_ptr<ResultWriter>> writers;
     writers.push_back(std::make_unique<ContactPressureWriter>());
@@ -60,10 +61,10 @@ namespace coaxfit
     writers.push_back(std::make_unique<SurfaceStressWriter>());
     if (output.write_vtu)
       {
-        writers.push_back(std::make_unique<BodyVtuWriter>(true));
-        writers.push_back(std::make_unique<BodyVtuWriter>(false));
+        for (unsigned int b = 0; b < body_keys.size(); ++b)
+          writers.push_back(std::make_unique<BodyVtuWriter>(b, body_keys[b]));
         writers.push_back(std::make_unique<InterfaceVtpWriter>());
-        writers.push_back(std::make_unique<PvdWriter>());
+        writers.push_back(std::make_unique<PvdWriter>(body_keys));
       }
     if (output.write_plots)
       writers.push_back(std::make_unique<PlotWriter>());
@@ -81,7 +82,8 @@ namespace coaxfit
     everything.write_plots  = true;
     everything.write_report = true;
     std::set<std::string> names;
-    for (const auto &writer : make_result_writers(everything))
+    for (const auto &writer :
+         make_result_writers(everything, Scene::body_keys(Parameters())))
       for (const std::string &name : writer->file_names())
         names.insert(name);
     for (const std::string &name : SummaryWriter().file_names())

@@ -14,8 +14,10 @@ namespace coaxfit
     const Vector<double>   gap
       = results.interface.gap(solver.u_shaft(), solver.u_hub());
     // Total displacements: the contact answer plus the loads of operation.
-    const Vector<double> &load1 = results.interface.load_displacement(true);
-    const Vector<double> &load2 = results.interface.load_displacement(false);
+    const Vector<double> &load1
+      = results.interface.load_displacement(ContactInterface::Side::inner);
+    const Vector<double> &load2
+      = results.interface.load_displacement(ContactInterface::Side::outer);
     out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n";
     for (unsigned int i = 0; i < results.interface.n_points(); ++i)
       out << results.interface.z()[i] << ',' << results.pressure.pressure[i]

@@ -10,9 +10,8 @@ namespace coaxfit
                             const std::string &directory) const
   {
     const std::string name = file_names()[0];
-    for (const Vector<double> *field :
-         {&results.shaft_field, &results.hub_field})
-      check_values_for_output(*field, directory + "/" + name);
+    for (const Vector<double> &field : results.fields)
+      check_values_for_output(field, directory + "/" + name);
     std::ofstream           out = open_result_file(directory + "/" + name);
     const ContactInterface &interface = results.interface;
     const InterfaceSolver  &solver    = results.solver;
@@ -23,15 +22,17 @@ namespace coaxfit
 
     // The total displacement (u_r, u_z) of each body's surface point i:
     // the body's own field (contact answer plus loads of operation), the
-    // shaft's plus its oversize d (it is made larger than the mesh at the
-    // joint radius, see AssembledDisplacement).
-    const auto surface = [&](const bool shaft, const unsigned int i) {
-      const BodyDiscretization &body = shaft ? results.shaft : results.hub;
-      const Vector<double>     &field
-        = shaft ? results.shaft_field : results.hub_field;
-      return std::array<double, 2>{{field[body.get_interface_dofs()[i]]
-                                      + (shaft ? interface.interference() : 0.),
-                                    field[body.get_interface_axial_dofs()[i]]}};
+    // inner side's plus its oversize d (it is made larger than the mesh
+    // at the joint radius, see AssembledDisplacement).
+    const Scene      &scene = results.scene;
+    const JointSides &joint = scene.joints[0];
+    const auto surface = [&](const unsigned int body, const unsigned int i) {
+      const BodyDiscretization &d     = *scene.bodies[body].discretization;
+      const Vector<double>     &field = results.fields[body];
+      return std::array<double, 2>{
+        {field[d.get_interface_dofs()[i]]
+           + (body == joint.inner ? interface.interference() : 0.),
+         field[d.get_interface_axial_dofs()[i]]}};
     };
     const auto scalar =
       [&](const std::string &array_name, const std::string &unit, auto value) {
@@ -42,16 +43,17 @@ namespace coaxfit
           out << value(i) << (i + 1 < n ? ' ' : '\n');
         out << "</DataArray>\n";
       };
-    const auto vector = [&](const std::string &array_name, const bool shaft) {
-      out << "<DataArray type=\"Float64\" Name=\"" << array_name
-          << "\" units=\"mm\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          const auto u = surface(shaft, i);
-          out << u[0] << ' ' << u[1] << " 0\n";
-        }
-      out << "</DataArray>\n";
-    };
+    const auto vector
+      = [&](const std::string &array_name, const unsigned int body) {
+          out << "<DataArray type=\"Float64\" Name=\"" << array_name
+              << "\" units=\"mm\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto u = surface(body, i);
+              out << u[0] << ' ' << u[1] << " 0\n";
+            }
+          out << "</DataArray>\n";
+        };
 
     out << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"PolyData\" version=\"0.1\" "
@@ -61,10 +63,10 @@ namespace coaxfit
            "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
         << "<PointData Scalars=\"contact_pressure_MPa\" "
            "Vectors=\"displacement_mm\">\n";
-    // The hub's bore, in place; the shaft's surface meets it where the
-    // two are in contact.
-    vector("displacement_mm", false);
-    vector("shaft_displacement_mm", true);
+    // The outer side (the hub's bore), in place; the inner side's surface
+    // meets it where the two are in contact.
+    vector("displacement_mm", joint.outer);
+    vector(scene.bodies[joint.inner].key() + "_displacement_mm", joint.inner);
     scalar("contact_pressure_MPa", "MPa", [&](unsigned int i) {
       return results.pressure.pressure[i];
     });
@@ -76,8 +78,8 @@ namespace coaxfit
     out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
            "NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (unsigned int i = 0; i < n; ++i)
-      out << results.parameters.geometry.R1 << ' ' << interface.z()[i]
-          << " 0\n";
+      out << scene.outer(joint).discretization->interface_points()[i][0] << ' '
+          << interface.z()[i] << " 0\n";
     out << "</DataArray>\n</Points>\n<Lines>\n"
         << "<DataArray type=\"Int32\" Name=\"connectivity\" "
            "format=\"ascii\">\n";

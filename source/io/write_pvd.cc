@@ -15,17 +15,24 @@ namespace coaxfit
            "version=\"0.1\" byte_order=\"LittleEndian\">\n"
            "<Collection>\n";
     // Named blocks (ParaView 5.11's reader shows the names).
+    std::vector<std::pair<std::string, std::string>> blocks;
+    for (const std::string &key : body_keys)
+      blocks.emplace_back(key, key + ".vtu");
+    blocks.emplace_back("contact_surface", "interface.vtp");
     unsigned int part = 0;
-    for (const auto &[block, file] :
-         {std::pair<const char *, const char *>{"shaft", "shaft.vtu"},
-          {"hub", "hub.vtu"},
-          {"contact_surface", "interface.vtp"}})
+    for (const auto &[block, file] : blocks)
       out << "<DataSet timestep=\"0\" group=\"\" part=\"" << part++
           << "\" name=\"" << block << "\" file=\"" << file << "\"/>\n";
     out << "</Collection>\n</VTKFile>\n";
     close_result_file(out, directory + "/" + name);
     return name + ": open this one in ParaView";
   }
+
+
+  PvdWriter::PvdWriter(const std::vector<std::string> &body_keys)
+    : body_keys(body_keys)
+  {}
+
 
 
   std::vector<std::string>

@@ -27,6 +27,14 @@ namespace coaxfit
     {
       const Parameters         &p = results.parameters;
       const GeometryParameters &g = p.geometry;
+      std::string               cells;
+      unsigned int              dofs = 0;
+      for (const Body &body : results.scene.bodies)
+        {
+          cells += (cells.empty() ? "" : " + ")
+                   + std::to_string(body.discretization->n_cells());
+          dofs += body.discretization->n_dofs();
+        }
       out << "## Inputs\n\n| | |\n|---|---|\n"
           << "| joint diameter D_F | " << 2. * g.R1 << " mm |\n"
           << "| shaft bore diameter D_iI | "
@@ -44,9 +52,7 @@ namespace coaxfit
           << ", " << p.design.press_in_friction_coefficient << " |\n"
           << "| required torque, axial force | " << p.design.required_torque
           << " N m, " << p.design.required_axial_force << " N |\n"
-          << "| mesh | " << results.shaft.n_cells() << " + "
-          << results.hub.n_cells() << " cells, "
-          << results.shaft.n_dofs() + results.hub.n_dofs() << " DoFs, FE_Q("
+          << "| mesh | " << cells << " cells, " << dofs << " DoFs, FE_Q("
           << p.mesh.degree << ") |\n\n";
     }
   } // namespace

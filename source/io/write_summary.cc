@@ -63,15 +63,17 @@ namespace coaxfit
                            {"density", m->density},
                            {"thermal_expansion", m->thermal_expansion}};
       j["material"] = materials;
-      j["mesh"]
-        = {{"degree", p.mesh.degree},
-           {"global_refinements", p.mesh.global_refinements},
-           {"cells",
-            {{"shaft", results.shaft.n_cells()},
-             {"hub", results.hub.n_cells()}}},
-           {"dofs",
-            {{"shaft", results.shaft.n_dofs()}, {"hub", results.hub.n_dofs()}}},
-           {"interface_points", results.interface.n_points()}};
+      Json cells, dofs;
+      for (const Body &body : results.scene.bodies)
+        {
+          cells[body.key()] = body.discretization->n_cells();
+          dofs[body.key()]  = body.discretization->n_dofs();
+        }
+      j["mesh"] = {{"degree", p.mesh.degree},
+                   {"global_refinements", p.mesh.global_refinements},
+                   {"cells", cells},
+                   {"dofs", dofs},
+                   {"interface_points", results.interface.n_points()}};
       return j;
     }
 

@@ -6,8 +6,9 @@
 
 namespace coaxfit
 {
-  BodyVtuWriter::BodyVtuWriter(const bool shaft)
-    : shaft(shaft)
+  BodyVtuWriter::BodyVtuWriter(const unsigned int body, const std::string &key)
+    : body(body)
+    , key(key)
   {}
 
 
@@ -17,20 +18,16 @@ namespace coaxfit
                        const std::string &directory) const
   {
     const std::string         name = file_names()[0];
-    const BodyDiscretization &body = shaft ? results.shaft : results.hub;
+    const BodyDiscretization &d    = *results.scene.bodies[body].discretization;
     const std::string         file = directory + "/" + name;
-    const Vector<double>     &field
-      = shaft ? results.shaft_field : results.hub_field;
+    const Vector<double>     &field = results.fields[body];
     check_values_for_output(field, file);
     std::ofstream out = open_result_file(file);
     try
       {
-        // The shaft is made larger than its mesh by d (radially): drawn
-        // in its assembled place by displacement_mm.
-        const double oversize = shaft ? results.interface.interference()
-                                          / results.parameters.geometry.R1 :
-                                        0.;
-        body.output_results(field, out, shaft ? 0 : 1, oversize);
+        // The inner body of a joint is made larger than its mesh by d
+        // (radially): drawn in its assembled place by displacement_mm.
+        d.output_results(field, out, body, results.scene.oversize(body));
       }
     catch (const ExceptionBase &) // deal.II's ExcIO on a failed stream
       {
@@ -38,13 +35,13 @@ namespace coaxfit
       }
     close_result_file(out, file);
     return name + ": displacement and stresses on "
-           + std::to_string(body.n_cells()) + " cells";
+           + std::to_string(d.n_cells()) + " cells";
   }
 
 
   std::vector<std::string>
   BodyVtuWriter::file_names() const
   {
-    return {shaft ? "shaft.vtu" : "hub.vtu"};
+    return {key + ".vtu"};
   }
 } // namespace coaxfit

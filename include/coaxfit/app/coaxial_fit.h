@@ -7,6 +7,7 @@
 #include <coaxfit/coupling/coarse_interface_model.h>
 #include <coaxfit/coupling/contact_interface.h>
 #include <coaxfit/coupling/interface_solver.h>
+#include <coaxfit/coupling/scene.h>
 #include <coaxfit/coupling/staggered_coupling.h>
 #include <coaxfit/design/fit_design.h>
 #include <coaxfit/design/pressure_summary.h>
@@ -24,33 +25,15 @@
 
 namespace coaxfit
 {
-  /** Geometry and mesh settings of the shaft D1 for @p parameters. */
-  BodyGeometry
-  shaft_geometry(const Parameters &parameters);
-
-  /** Geometry and mesh settings of the hub D2 for @p parameters. */
-  BodyGeometry
-  hub_geometry(const Parameters &parameters);
-
-  /**
-   * The loads of operation that the shaft (@p shaft) or the hub carries:
-   * its thermal strain, the rotation, its pressure.
-   */
-  BodyLoad
-  body_load(const Parameters &parameters, bool shaft);
-
-  /** The discretization of the shaft (@p shaft) or the hub, not set up. */
-  std::unique_ptr<BodyDiscretization>
-  make_body(const Parameters &parameters, bool shaft);
-
   /**
    * One coaxfit run, in deal.II's tutorial structure: setup_system() builds
-   * the shaft D1 and the hub D2 with matching contact surfaces, their
-   * interface and factorizations; solve() runs the selected solver
-   * (staggered coupling or monolithic reference); output_results() writes
-   * the result files through the ResultWriters and summary.json. run() does
-   * all three, with the files staged in a ResultDirectory that replaces
-   * Output/Directory as a whole once every file is complete.
+   * the bodies of its Scene (the shaft D1 and the hub D2) with matching
+   * joint surfaces, their interface and factorizations; solve() runs the
+   * selected solver (staggered coupling or monolithic reference);
+   * output_results() writes the result files through the ResultWriters and
+   * summary.json. run() does all three, with the files staged in a
+   * ResultDirectory that replaces Output/Directory as a whole once every file
+   * is complete.
    */
   class CoaxialFit
   {
@@ -161,11 +144,12 @@ namespace coaxfit
     contact_force_for(const Vector<double> &interference, bool unilateral);
 
     /**
-     * How the free bodies' loads @p shaft_load, @p hub_load change the
-     * interference at each point: u1 - u2 on S (mm).
+     * How the loads @p loads of the free bodies (one per body of the
+     * scene) change the interference at each point of the joint: u_r of
+     * its inner side minus u_r of its outer side (mm).
      */
     Vector<double>
-    interference_change(const BodyLoad &shaft_load, const BodyLoad &hub_load);
+    interference_change(const std::vector<BodyLoad> &loads);
 
     /** Largest interface for which Interface operator = auto condenses. */
     static constexpr unsigned int max_condensed_points = 2000;
@@ -223,7 +207,7 @@ namespace coaxfit
      */
     bool
     wants_coarse_model() const;
-    /** The short-wave interface compliances of shaft and hub. */
+    /** The short-wave interface compliances of the joint's two sides. */
     std::array<ShortWaveCompliance, 2>
     short_wave_compliances() const;
     /**
@@ -263,18 +247,16 @@ namespace coaxfit
       failed  ///< its coupling threw a SolverError
     } twin_state
       = TwinState::stale;
-    std::ostream                       &out;
-    ConditionalOStream                  pcout;
-    std::unique_ptr<BodyDiscretization> shaft, hub;
-    std::unique_ptr<BodySolver>         shaft_solver, hub_solver;
-    std::unique_ptr<CondensedBody>      condensed_shaft, condensed_hub;
-    std::unique_ptr<ContactInterface>   interface;
-    std::unique_ptr<InterfaceSolver>    coupling;
-    std::unique_ptr<FitDesign>          design;
-    Vector<double>                      shaft_field, hub_field;
-    SolverStatistics                    statistics;  ///< after solve()
-    Vector<double> shaft_load_field, hub_load_field; ///< loads alone
-    TimerOutput    timer;
+    std::ostream                     &out;
+    ConditionalOStream                pcout;
+    Scene                             scene;
+    std::unique_ptr<ContactInterface> interface;
+    std::unique_ptr<InterfaceSolver>  coupling;
+    std::unique_ptr<FitDesign>        design;
+    /** Each body's field: the contact answer plus its loads' answer. */
+    std::vector<Vector<double>> fields;
+    SolverStatistics            statistics; ///< after solve()
+    TimerOutput                 timer;
   };
 } // namespace coaxfit
 

@@ -48,6 +48,46 @@ namespace coaxfit
 
 
   /**
+   * Run @p job for every element of @p items concurrently (each body of a
+   * scene) and wait for all: the last on this thread, the others as tasks;
+   * for two items what concurrently() does. The first exception thrown, in
+   * the order of the items, is re-thrown after every job has finished.
+   */
+  template <typename Container, typename F>
+  void
+  for_each_concurrently(Container &items, const F &job)
+  {
+    const std::size_t                        n = items.size();
+    std::vector<std::exception_ptr>          errors(n);
+    std::vector<dealii::Threads::Task<void>> tasks;
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      tasks.push_back(dealii::Threads::new_task([&, i]() {
+        try
+          {
+            job(items[i]);
+          }
+        catch (...)
+          {
+            errors[i] = std::current_exception();
+          }
+      }));
+    if (n > 0)
+      try
+        {
+          job(items[n - 1]);
+        }
+      catch (...)
+        {
+          errors[n - 1] = std::current_exception();
+        }
+    for (auto &task : tasks)
+      task.join();
+    for (const std::exception_ptr &error : errors)
+      if (error)
+        std::rethrow_exception(error);
+  }
+
+  /**
    * Run every job of @p jobs on a thread of its own and wait for all of
    * them (result writers: a job may wait for a child process, so it gets
    * a thread, not a task of the pool). The first exception thrown, in the

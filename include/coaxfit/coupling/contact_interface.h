@@ -84,11 +84,18 @@ namespace coaxfit
       return d_load[i];
     }
 
-    /** u_r of S under the loads of operation alone: shaft, hub. */
-    const Vector<double> &
-    load_displacement(const bool shaft) const
+    /** The two sides of the joint: the inner body (D1), the outer (D2). */
+    enum class Side
     {
-      return shaft ? u1_load : u2_load;
+      inner,
+      outer
+    };
+
+    /** u_r of S under the loads of operation alone, of the side @p side. */
+    const Vector<double> &
+    load_displacement(const Side side) const
+    {
+      return side == Side::inner ? u1_load : u2_load;
     }
 
     /**

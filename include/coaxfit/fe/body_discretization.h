@@ -151,6 +151,21 @@ namespace coaxfit
                      Vector<double>          &u_r,
                      Vector<double>          &force_out) const;
 
+    /** The values of u_r of @p field at the interface points. */
+    Vector<double>
+    interface_radial_values(const Vector<double> &field) const
+    {
+      Vector<double> u_r(interface_dofs.size());
+      for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+        u_r[i] = field[interface_dofs[i]];
+      return u_r;
+    }
+    /** The (r, z) support point of each interface point. */
+    const std::vector<Point<2>> &
+    interface_points() const
+    {
+      return points;
+    }
     /** Number of interface points. */
     unsigned int
     n_interface_points() const
@@ -289,6 +304,7 @@ namespace coaxfit
     std::vector<types::global_dof_index> interface_dofs;
     std::vector<types::global_dof_index> interface_axial_dofs;
     std::vector<double>                  interface_z_coordinates;
+    std::vector<Point<2>>                points;
     Vector<double>                       weights;
     std::vector<Tensor<1, 2>>            normals;
   };

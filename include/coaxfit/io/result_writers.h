@@ -5,6 +5,7 @@
 
 #include <coaxfit/coupling/contact_interface.h>
 #include <coaxfit/coupling/interface_solver.h>
+#include <coaxfit/coupling/scene.h>
 #include <coaxfit/design/fit_design.h>
 #include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/design/pressure_summary.h>
@@ -22,13 +23,11 @@ namespace coaxfit
   /** Everything a result writer may read about a finished run. */
   struct RunResults
   {
-    const Parameters         &parameters;
-    const BodyDiscretization &shaft;
-    const BodyDiscretization &hub;
-    const Vector<double>     &shaft_field;
-    const Vector<double>     &hub_field;
-    const ContactInterface   &interface;
-    const InterfaceSolver    &solver;
+    const Parameters                  &parameters;
+    const Scene                       &scene;
+    const std::vector<Vector<double>> &fields; ///< per body of scene
+    const ContactInterface            &interface;
+    const InterfaceSolver             &solver;
     /** The solver's work for this state (before any further analysis). */
     const SolverStatistics              &statistics;
     const PressureSummary               &pressure;
@@ -112,8 +111,11 @@ namespace coaxfit
   class BodyVtuWriter : public ResultWriter
   {
   public:
-    /** @p shaft: which body to write. */
-    explicit BodyVtuWriter(bool shaft);
+    /**
+     * Write the body @p body of the scene into `<key>.vtu`, @p key being
+     * its lower-case name.
+     */
+    BodyVtuWriter(unsigned int body, const std::string &key);
 
     std::string
     write(const RunResults  &results,
@@ -123,7 +125,8 @@ namespace coaxfit
     file_names() const override;
 
   private:
-    const bool shaft;
+    const unsigned int body;
+    const std::string  key;
   };
 
   /**
@@ -145,12 +148,18 @@ namespace coaxfit
   class PvdWriter : public ResultWriter
   {
   public:
+    /** The blocks: one per body (`<key>.vtu`), then the contact surface. */
+    explicit PvdWriter(const std::vector<std::string> &body_keys);
+
     std::string
     write(const RunResults  &results,
           const std::string &directory) const override;
 
     std::vector<std::string>
     file_names() const override;
+
+  private:
+    const std::vector<std::string> body_keys;
   };
 
   /**
@@ -241,7 +250,8 @@ namespace coaxfit
 
   /** The writers of the files that @p output asks for, summary.json aside. */
   std::vector<std::unique_ptr<ResultWriter>>
-  make_result_writers(const OutputParameters &output);
+  make_result_writers(const OutputParameters         &output,
+                      const std::vector<std::string> &body_keys);
 
   /**
    * The name of every file any run may write (all writers, summary.json

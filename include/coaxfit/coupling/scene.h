@@ -1,0 +1,147 @@
+#ifndef coaxfit_scene_h
+#define coaxfit_scene_h
+
+#include <deal.II/lac/vector.h>
+
+#include <coaxfit/fe/body_discretization.h>
+#include <coaxfit/parameters/parameters.h>
+#include <coaxfit/solvers/body_solver.h>
+#include <coaxfit/solvers/condensed_body.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * One body of a Scene: its discretization (name, section, material, loads
+   * of operation, mesh and operator), the solver of its operator and its
+   * condensed interface operator once they are made, and its field under
+   * its own loads of operation with a free joint surface.
+   */
+  struct Body
+  {
+    explicit Body(std::unique_ptr<BodyDiscretization> discretization);
+
+    /** The name as the parameter file spells it ("Shaft", "Hub"). */
+    const std::string &
+    name() const
+    {
+      return discretization->name();
+    }
+
+    /**
+     * The name in lower case, as result files and summary.json keys spell
+     * it ("shaft" in shaft.vtu and "n_dofs": {"shaft": ...}).
+     */
+    std::string
+    key() const
+    {
+      return key_of(name());
+    }
+
+    /** @p name in lower case. */
+    static std::string
+    key_of(const std::string &name);
+
+    std::unique_ptr<BodyDiscretization> discretization;
+    std::unique_ptr<BodySolver>         solver;     ///< after set-up
+    std::unique_ptr<CondensedBody>      condensed;  ///< once condensed
+    Vector<double>                      load_field; ///< loads alone
+  };
+
+
+
+  /**
+   * Two bodies whose tagged joint surfaces (BoundaryId::joint) touch: the
+   * inner one (whose outward normal on the joint points away from the
+   * axis) and the outer one, as indices into Scene::bodies, and the
+   * radial interference of the drawing between them.
+   */
+  struct JointSides
+  {
+    unsigned int inner;
+    unsigned int outer;
+    double       interference; ///< mm, radial
+  };
+
+
+
+  /**
+   * The bodies of one run and the joints between them, built from the
+   * parameters: everything downstream loops over the bodies and joints or
+   * asks a body its name. The parameter files of this version describe
+   * two bodies, `Shaft` inside `Hub` (their Material subsections are named
+   * so), with one joint on the cylinder of the joint diameter.
+   */
+  class Scene
+  {
+  public:
+    /** The bodies and joints of @p parameters, not yet set up. */
+    explicit Scene(const Parameters &parameters);
+
+    /** The names of the bodies of @p parameters, inside out. */
+    static std::vector<std::string>
+    body_names(const Parameters &parameters);
+
+    /** The lower-case names of body_names(). */
+    static std::vector<std::string>
+    body_keys(const Parameters &parameters);
+
+    /**
+     * Take the loads of operation and interferences of @p parameters
+     * (meshes and operators stay: they do not depend on them).
+     */
+    void
+    set_loads(const Parameters &parameters);
+
+    /** The body on the inside of @p joint. */
+    const Body &
+    inner(const JointSides &joint) const
+    {
+      return bodies[joint.inner];
+    }
+
+    /** The body on the outside of @p joint. */
+    const Body &
+    outer(const JointSides &joint) const
+    {
+      return bodies[joint.outer];
+    }
+
+    /**
+     * How far the body @p body is drawn larger than its mesh at its
+     * joint, as a strain: d / R for the inner body of a joint (it is made
+     * larger by the radial interference d at the joint radius R), 0 for
+     * an outer one. ParaView's warp then shows the assembled parts.
+     */
+    double
+    oversize(unsigned int body) const;
+
+    std::vector<Body>       bodies; ///< inside out
+    std::vector<JointSides> joints; ///< between neighbours, inside out
+  };
+
+
+
+  /**
+   * Geometry and mesh settings of the body named @p name (one of
+   * Scene::body_names()) of @p parameters.
+   */
+  BodyGeometry
+  body_geometry(const Parameters &parameters, const std::string &name);
+
+  /**
+   * The loads of operation that the body named @p name carries: its
+   * thermal strain, the rotation, the pressure on its free surface.
+   */
+  BodyLoad
+  body_load(const Parameters &parameters, const std::string &name);
+
+  /** The discretization of the body named @p name, not set up. */
+  std::unique_ptr<BodyDiscretization>
+  make_body(const Parameters &parameters, const std::string &name);
+} // namespace coaxfit
+
+#endif

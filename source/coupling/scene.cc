@@ -1,0 +1,150 @@
+#include <coaxfit/coupling/scene.h>
+
+#include <cctype>
+#include <stdexcept>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** Throw if @p name is not a body of the parameter files. */
+    bool
+    is_shaft(const std::string &name)
+    {
+      if (name != "Shaft" && name != "Hub")
+        throw std::logic_error("no body named '" + name + "'");
+      return name == "Shaft";
+    }
+  } // namespace
+
+
+
+  Body::Body(std::unique_ptr<BodyDiscretization> discretization)
+    : discretization(std::move(discretization))
+  {}
+
+
+
+  std::string
+  Body::key_of(const std::string &name)
+  {
+    std::string key = name;
+    for (char &c : key)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return key;
+  }
+
+
+
+  BodyGeometry
+  body_geometry(const Parameters &parameters, const std::string &name)
+  {
+    const GeometryParameters &geometry = parameters.geometry;
+    BodyGeometry              g;
+    g.contact_length     = geometry.contact_length();
+    g.axial_cells        = parameters.mesh.axial_cells;
+    g.radial_cells       = parameters.mesh.radial_cells;
+    g.grading_ratio      = parameters.mesh.grading_ratio;
+    g.global_refinements = parameters.mesh.global_refinements;
+    if (is_shaft(name))
+      {
+        g.r_inner                 = geometry.R0;
+        g.r_outer                 = geometry.R1;
+        g.length                  = geometry.L1;
+        g.contact_at_outer_radius = true;
+      }
+    else
+      {
+        g.r_inner                 = geometry.R1;
+        g.r_outer                 = geometry.R2;
+        g.length                  = geometry.L2;
+        g.contact_at_outer_radius = false;
+      }
+    return g;
+  }
+
+
+
+  BodyLoad
+  body_load(const Parameters &parameters, const std::string &name)
+  {
+    const OperationParameters &o     = parameters.operation;
+    const bool                 shaft = is_shaft(name);
+    const Material            &m = shaft ? parameters.shaft : parameters.hub;
+    BodyLoad                   load;
+    load.thermal_strain
+      = m.thermal_expansion
+        * ((shaft ? o.shaft_temperature() : o.hub_temperature())
+           - o.assembly_temperature);
+    load.omega_squared = o.omega() * o.omega();
+    if (shaft)
+      load.inner_pressure = o.shaft_bore_pressure;
+    else
+      load.outer_pressure = o.hub_outer_pressure;
+    return load;
+  }
+
+
+
+  std::unique_ptr<BodyDiscretization>
+  make_body(const Parameters &parameters, const std::string &name)
+  {
+    return std::make_unique<BodyDiscretization>(
+      name,
+      body_geometry(parameters, name),
+      is_shaft(name) ? parameters.shaft : parameters.hub,
+      parameters.mesh.degree,
+      parameters.mesh.reduced_volumetric_integration(),
+      body_load(parameters, name));
+  }
+
+
+
+  std::vector<std::string>
+  Scene::body_names(const Parameters &)
+  {
+    return {"Shaft", "Hub"};
+  }
+
+
+
+  std::vector<std::string>
+  Scene::body_keys(const Parameters &parameters)
+  {
+    std::vector<std::string> keys;
+    for (const std::string &name : body_names(parameters))
+      keys.push_back(Body::key_of(name));
+    return keys;
+  }
+
+
+
+  Scene::Scene(const Parameters &parameters)
+  {
+    for (const std::string &name : body_names(parameters))
+      bodies.emplace_back(make_body(parameters, name));
+    joints.push_back({0, 1, parameters.geometry.d});
+  }
+
+
+
+  void
+  Scene::set_loads(const Parameters &parameters)
+  {
+    for (Body &body : bodies)
+      body.discretization->set_load(body_load(parameters, body.name()));
+    joints[0].interference = parameters.geometry.d;
+  }
+
+
+
+  double
+  Scene::oversize(const unsigned int body) const
+  {
+    for (const JointSides &joint : joints)
+      if (joint.inner == body)
+        return joint.interference
+               / bodies[body].discretization->geometry().contact_radius();
+    return 0.;
+  }
+} // namespace coaxfit

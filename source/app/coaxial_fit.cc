@@ -1,6 +1,7 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/base/blas_threads.h>
 #include <coaxfit/base/concurrency.h>
@@ -344,6 +345,31 @@ namespace coaxfit
                      *scene.outer(joint).discretization,
                      fields[joint.outer],
                      coupling->contact_force());
+  }
+
+
+
+  SolvedState
+  CoaxialFit::solved_state() const
+  {
+    return {pressure_summary(),
+            state_design(),
+            coupling->converged(),
+            coupling->n_steps(),
+            coupling->get_active_set().separated_zones(
+              interface->z(), parameters.geometry.contact_length())};
+  }
+
+
+
+  SolvedState
+  CoaxialFit::solve_state(const Parameters &other)
+  {
+    std::ostringstream quiet;
+    CoaxialFit         fit(other, quiet, false);
+    fit.setup_system();
+    fit.solve(nullptr);
+    return fit.solved_state();
   }
 
 

@@ -159,4 +159,26 @@ namespace coaxfit
     table << "  fit_cases.csv: the design figures of the three cases\n";
     out << table.str();
   }
+
+
+
+  std::set<std::string>
+  all_result_file_names()
+  {
+    OutputParameters everything;
+    everything.write_vtu    = true;
+    everything.write_plots  = true;
+    everything.write_report = true;
+    std::set<std::string> names;
+    for (const auto &writer :
+         make_result_writers(everything, Scene::body_keys(Parameters())))
+      for (const std::string &name : writer->file_names())
+        names.insert(name);
+    for (const std::string &name : SummaryWriter().file_names())
+      names.insert(name);
+    // A Fit/Case = all study may have written the directory before.
+    for (const std::string &name : FitCaseStudy::file_names())
+      names.insert(name);
+    return names;
+  }
 } // namespace coaxfit

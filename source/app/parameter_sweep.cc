@@ -2,6 +2,7 @@
 
 #include <coaxfit/app/case_batch.h>
 #include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/app/parameter_sweep.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/base/concurrency.h>

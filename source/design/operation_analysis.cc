@@ -1,5 +1,5 @@
-#include <coaxfit/app/coaxial_fit.h>
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/coupling/scene.h>
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/parameters/parameter_checks.h>
@@ -38,13 +38,10 @@ namespace coaxfit
 
 
   OperationAnalysis::State
-  state_figures(const std::string &name,
-                const Parameters  &parameters,
-                const CoaxialFit  &fit)
+  state_figures(const std::string &name, const SolvedState &state)
   {
-    const PressureSummary    pressure = fit.pressure_summary();
-    const FitDesign          design   = fit.state_design();
-    const InterfaceSolver   &solver   = fit.get_coupling();
+    const PressureSummary   &pressure = state.pressure;
+    const FitDesign         &design   = state.design;
     OperationAnalysis::State s;
     s.name                     = name;
     s.pressure_mid_plane       = pressure.at_mid_plane;
@@ -61,10 +58,9 @@ namespace coaxfit
     s.safety_slip_din          = design.safety_slip_din;
     s.safety_yield_shaft       = design.safety_yield_shaft;
     s.safety_yield_hub         = design.safety_yield_hub;
-    s.converged                = solver.converged();
-    s.iterations               = solver.n_steps();
-    for (const auto &[start, end] : solver.get_active_set().separated_zones(
-           fit.get_interface().z(), parameters.geometry.contact_length()))
+    s.converged                = state.converged;
+    s.iterations               = state.n_steps;
+    for (const auto &[start, end] : state.separated_zones)
       s.separated_length += end - start;
     s.contact_lost = !(pressure.max > 0.);
     return s;
@@ -73,18 +69,13 @@ namespace coaxfit
 
 
   OperationAnalysis::OperationAnalysis(const Parameters &parameters,
-                                       CoaxialFit       &fit)
+                                       StateSolver      &fit)
     : has_loads(parameters.operation.has_loads())
   {
-    operation = state_figures("operation", parameters, fit);
+    operation = state_figures("operation", fit.solved_state());
     if (has_loads)
-      {
-        std::ostringstream quiet;
-        CoaxialFit         assembled(at_assembly(parameters), quiet, false);
-        assembled.setup_system();
-        assembled.solve(nullptr);
-        assembly = state_figures("assembly", parameters, assembled);
-      }
+      assembly
+        = state_figures("assembly", fit.solve_state(at_assembly(parameters)));
     else
       assembly = operation;
     assembly.name = "assembly";
@@ -125,7 +116,7 @@ namespace coaxfit
 
   void
   OperationAnalysis::compute_loosening_speed(const Parameters &parameters,
-                                             CoaxialFit       &fit)
+                                             StateSolver      &fit)
   {
     // A figure of rotating joints: computed when Operation/Speed is given
     // (the densities are then known, validate() asks for them).

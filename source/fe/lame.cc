@@ -46,23 +46,6 @@ namespace coaxfit
   {
     return A + (r > 0. ? B / (r * r) : 0.);
   }
-
-
-
-  double
-  lame_pressure(const double    R0,
-                const double    R1,
-                const double    R2,
-                const double    d,
-                const Material &shaft,
-                const Material &hub)
-  {
-    const double hub_compliance
-      = ((R2 * R2 + R1 * R1) / (R2 * R2 - R1 * R1) + hub.nu) / hub.E;
-    const double shaft_compliance
-      = ((R1 * R1 + R0 * R0) / (R1 * R1 - R0 * R0) - shaft.nu) / shaft.E;
-    return d / (R1 * (hub_compliance + shaft_compliance));
-  }
 } // namespace coaxfit
 
 #include <deal.II/base/quadrature_lib.h>

@@ -219,14 +219,6 @@ namespace coaxfit
 
 
 
-  const std::string &
-  ResultDirectory::target_path() const
-  {
-    return target;
-  }
-
-
-
   void
   ResultDirectory::remove_stale_staging() const
   {

@@ -1,4 +1,3 @@
-#include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/io/result_writers.h>
 
@@ -71,26 +70,5 @@ namespace coaxfit
     if (output.write_report) // last: it shows the plots that exist
       writers.push_back(std::make_unique<ReportWriter>());
     return writers;
-  }
-
-
-  std::set<std::string>
-  all_result_file_names()
-  {
-    OutputParameters everything;
-    everything.write_vtu    = true;
-    everything.write_plots  = true;
-    everything.write_report = true;
-    std::set<std::string> names;
-    for (const auto &writer :
-         make_result_writers(everything, Scene::body_keys(Parameters())))
-      for (const std::string &name : writer->file_names())
-        names.insert(name);
-    for (const std::string &name : SummaryWriter().file_names())
-      names.insert(name);
-    // A Fit/Case = all study may have written the directory before.
-    for (const std::string &name : FitCaseStudy::file_names())
-      names.insert(name);
-    return names;
   }
 } // namespace coaxfit

@@ -13,18 +13,4 @@ namespace coaxfit
           u_r,
           force_out);
   }
-
-
-
-  void
-  InterfaceOperator::solve_dirichlet(const Vector<double> &u_r,
-                                     Vector<double>       &force)
-  {
-    Vector<double> u_r_out;
-    solve(std::vector<bool>(u_r.size(), true),
-          u_r,
-          Vector<double>(u_r.size()),
-          u_r_out,
-          force);
-  }
 } // namespace coaxfit

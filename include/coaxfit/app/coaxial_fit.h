@@ -11,6 +11,7 @@
 #include <coaxfit/coupling/staggered_coupling.h>
 #include <coaxfit/design/fit_design.h>
 #include <coaxfit/design/pressure_summary.h>
+#include <coaxfit/design/state_solver.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/parameters/parameters.h>
 #include <coaxfit/solvers/body_solver.h>
@@ -35,7 +36,7 @@ namespace coaxfit
    * ResultDirectory that replaces Output/Directory as a whole once every file
    * is complete.
    */
-  class CoaxialFit
+  class CoaxialFit : public StateSolver
   {
   public:
     /**
@@ -113,10 +114,21 @@ namespace coaxfit
 
     /** The contact interface (after setup_system()). */
     const ContactInterface &
-    get_interface() const
+    get_interface() const override
     {
       return *interface;
     }
+
+    /** Pressures, design figures and how the solve ended (after solve()). */
+    SolvedState
+    solved_state() const override;
+
+    /**
+     * The state of @p other (the loads of operation of this case changed),
+     * solved by a case of its own, quietly.
+     */
+    SolvedState
+    solve_state(const Parameters &other) override;
 
     /** The design figures (after output_results()). */
     const FitDesign &
@@ -141,7 +153,8 @@ namespace coaxfit
      * interference while the contact zone is fixed.
      */
     Vector<double>
-    contact_force_for(const Vector<double> &interference, bool unilateral);
+    contact_force_for(const Vector<double> &interference,
+                      bool                  unilateral) override;
 
     /**
      * How the loads @p loads of the free bodies (one per body of the
@@ -149,7 +162,7 @@ namespace coaxfit
      * its inner side minus u_r of its outer side (mm).
      */
     Vector<double>
-    interference_change(const std::vector<BodyLoad> &loads);
+    interference_change(const std::vector<BodyLoad> &loads) override;
 
     /** Largest interface for which Interface operator = auto condenses. */
     static constexpr unsigned int max_condensed_points = 2000;

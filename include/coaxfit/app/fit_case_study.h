@@ -4,6 +4,7 @@
 #include <coaxfit/parameters/parameters.h>
 
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,13 @@ namespace coaxfit
     const bool       verbose;
     std::vector<Row> rows;
   };
+  /**
+   * The name of every file any run may write (all writers, summary.json
+   * and the files of a Fit/Case = all study included): what an existing
+   * result directory may contain.
+   */
+  std::set<std::string>
+  all_result_file_names();
 } // namespace coaxfit
 
 #endif

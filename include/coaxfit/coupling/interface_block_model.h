@@ -96,13 +96,6 @@ namespace coaxfit
       samples[hub].clear();
     }
 
-    /** Number of samples of @p body kept. */
-    unsigned int
-    n_samples(unsigned int body) const
-    {
-      return samples[body].size();
-    }
-
   private:
     /** A body's answer u to the forces F. */
     struct Sample

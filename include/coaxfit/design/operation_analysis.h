@@ -1,6 +1,7 @@
 #ifndef coaxfit_operation_analysis_h
 #define coaxfit_operation_analysis_h
 
+#include <coaxfit/design/state_solver.h>
 #include <coaxfit/parameters/parameters.h>
 
 #include <limits>
@@ -10,7 +11,6 @@
 
 namespace coaxfit
 {
-  class CoaxialFit;
 
   /**
    * The fit in service next to the fit as assembled (`Operation`): the
@@ -19,7 +19,7 @@ namespace coaxfit
    *
    * - **Two states.** The run's own solve is the operating state (its loads
    *   of operation). With loads, the state of assembly (no loads) is solved
-   *   by a second CoaxialFit on the same mesh.
+   *   by the run's StateSolver.
    * - **Loosening speed.** While the contact zone is fixed the problem is
    *   linear in the interference, and each body's answer to rotation is
    *   linear in omega^2: the interference at point i is
@@ -63,10 +63,9 @@ namespace coaxfit
     };
 
     /**
-     * Analyse the run @p fit (solved: setup_system() and solve() done) of
-     * @p parameters.
+     * Analyse the run of @p parameters that @p fit has solved.
      */
-    OperationAnalysis(const Parameters &parameters, CoaxialFit &fit);
+    OperationAnalysis(const Parameters &parameters, StateSolver &fit);
 
     /** Whether the scene has loads of operation. */
     bool has_loads;
@@ -120,17 +119,15 @@ namespace coaxfit
     print_joining(std::ostream &out) const;
 
     void
-    compute_loosening_speed(const Parameters &parameters, CoaxialFit &fit);
+    compute_loosening_speed(const Parameters &parameters, StateSolver &fit);
 
     void
     compute_joining(const Parameters &parameters);
   };
 
-  /** The figures of the state that @p fit has solved. */
+  /** The figures of the solved state @p state, called @p name. */
   OperationAnalysis::State
-  state_figures(const std::string &name,
-                const Parameters  &parameters,
-                const CoaxialFit  &fit);
+  state_figures(const std::string &name, const SolvedState &state);
 } // namespace coaxfit
 
 #endif

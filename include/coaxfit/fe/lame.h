@@ -44,22 +44,6 @@ namespace coaxfit
     Material material;
   };
 
-  /**
-   * Contact pressure of the shrink fit of a shaft (radii R0 <= r <= R1,
-   * material 1) in a hub (R1 <= r <= R2, material 2) with radial
-   * interference d, both of equal length with free ends (plane stress
-   * Lame solution):
-   * p = d / (R1 [((R2^2 + R1^2)/(R2^2 - R1^2) + nu2)/E2 +
-   *              ((R1^2 + R0^2)/(R1^2 - R0^2) - nu1)/E1]).
-   */
-  double
-  lame_pressure(double          R0,
-                double          R1,
-                double          R2,
-                double          d,
-                const Material &shaft,
-                const Material &hub);
-
   /** Relative errors of a body's solution against a Lame solution. */
   struct LameErrors
   {

@@ -62,10 +62,6 @@ namespace coaxfit
     const std::string &
     staging_path() const;
 
-    /** The directory the results end up in. */
-    const std::string &
-    target_path() const;
-
     /**
      * Flush every staged file to disk and put the staging directory in the
      * target's place; throws (with the previous result untouched) if that

@@ -254,13 +254,6 @@ namespace coaxfit
                       const std::vector<std::string> &body_keys);
 
   /**
-   * The name of every file any run may write (all writers, summary.json
-   * included): what an existing result directory may contain.
-   */
-  std::set<std::string>
-  all_result_file_names();
-
-  /**
    * Open @p filename for writing with 15 significant digits; throws if it
    * cannot be opened.
    */

@@ -46,10 +46,6 @@ namespace coaxfit
     /** Neumann step: nodal contact forces on all of S give u_r on S. */
     void
     solve_neumann(const Vector<double> &force, Vector<double> &u_r);
-
-    /** Dirichlet step: u_r on all of S gives the nodal reactions on S. */
-    void
-    solve_dirichlet(const Vector<double> &u_r, Vector<double> &force);
   };
 } // namespace coaxfit
 

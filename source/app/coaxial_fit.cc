@@ -532,7 +532,9 @@ namespace coaxfit
     design->press_in_force     = operation->assembly.press_in_force;
     design->press_in_force_din = operation->assembly.press_in_force_din;
     std::vector<std::string> warning_list = parameters.input_warnings();
-    for (const auto &list : {warnings(pressure), design->warnings(parameters)})
+    for (const auto &list : {warnings(pressure),
+                             design->warnings(parameters),
+                             operation->warnings(parameters)})
       warning_list.insert(warning_list.end(), list.begin(), list.end());
     if (operation->has_loads && !operation->holds)
       warning_list.push_back(operation->verdict);

@@ -40,6 +40,15 @@ namespace coaxfit
     rows.push_back({"safety against yield, hub",
                     design.safety_yield_hub,
                     design.safety_yield_hub_din});
+    if (!std::isnan(design.hoop_stress_max_hub))
+      {
+        rows.push_back({"hub (brittle): max hoop stress (MPa)",
+                        design.hoop_stress_max_hub,
+                        design.hoop_stress_max_hub_din});
+        rows.push_back({"safety against fracture (brittle, sigma_t vs R_m)",
+                        design.safety_fracture_hub,
+                        design.safety_fracture_hub_din});
+      }
     rows.push_back({"safety against yield, shaft",
                     design.safety_yield_shaft,
                     design.safety_yield_shaft_din});

@@ -148,6 +148,22 @@ namespace coaxfit
     safety_yield_shaft_din = safety(parameters.shaft.yield_strength,
                                     std::max(check_points[2].din.equivalent(),
                                              check_points[3].din.equivalent()));
+
+    // A brittle hub: the largest hoop stress against R_m, not yield.
+    if (parameters.hub.kind == MaterialKind::brittle)
+      {
+        hoop_stress_max_hub
+          = std::max(check_points[0].fe.hoop(), check_points[1].fe.hoop());
+        for (const StressState &s : hub_bore_stresses)
+          if (std::abs(s.z - z_corner) >= edge_distance)
+            hoop_stress_max_hub = std::max(hoop_stress_max_hub, s.hoop());
+        hoop_stress_max_hub_din
+          = std::max(check_points[0].din.hoop, check_points[1].din.hoop);
+        const double R_m        = parameters.hub.tensile_strength;
+        safety_fracture_hub     = safety(R_m, hoop_stress_max_hub);
+        safety_fracture_hub_din = safety(R_m, hoop_stress_max_hub_din);
+        safety_yield_hub = safety_yield_hub_din = FitDesign::unknown;
+      }
   }
 
 
@@ -176,6 +192,24 @@ namespace coaxfit
             << " MPa; the elastic answer overestimates the pressure";
           list.push_back(w.str());
         }
+    // DIN 7190 asks a safety of 2 to 3 against fracture of brittle parts.
+    if (safety_fracture_hub < 2. || safety_fracture_hub_din < 2.)
+      {
+        std::ostringstream w;
+        w.precision(3);
+        w << "the brittle hub (" << parameters.hub.name
+          << ") has a safety against fracture (sigma_t vs R_m) of "
+          << safety_fracture_hub << " (FE), " << safety_fracture_hub_din
+          << " (DIN 7190): largest hoop stress " << hoop_stress_max_hub
+          << " MPa (FE), " << hoop_stress_max_hub_din
+          << " MPa (DIN 7190) against R_m " << parameters.hub.tensile_strength
+          << " MPa; "
+          << (std::fmin(safety_fracture_hub, safety_fracture_hub_din) < 1. ?
+                "the hub cracks" :
+                "below 2, the least DIN 7190 asks of brittle materials (2 "
+                "to 3)");
+        list.push_back(w.str());
+      }
     if (safety_slip < 1. || safety_slip_din < 1.)
       {
         std::ostringstream w;

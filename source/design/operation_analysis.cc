@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 namespace coaxfit
 {
@@ -58,6 +59,7 @@ namespace coaxfit
     s.safety_slip_din          = design.safety_slip_din;
     s.safety_yield_shaft       = design.safety_yield_shaft;
     s.safety_yield_hub         = design.safety_yield_hub;
+    s.safety_fracture_hub      = design.safety_fracture_hub;
     s.converged                = state.converged;
     s.iterations               = state.n_steps;
     for (const auto &[start, end] : state.separated_zones)
@@ -214,14 +216,96 @@ namespace coaxfit
                               D_F,
                               parameters.hub.thermal_expansion,
                               o.assembly_temperature);
-    if (parameters.shaft.thermal_expansion > 0.)
-      joining_temperature_shaft
-        = joining_temperature(false,
-                              U,
-                              joining_clearance,
-                              D_F,
-                              parameters.shaft.thermal_expansion,
-                              o.assembly_temperature);
+    // DIN 7190's smaller coefficient for undercooling; without it the
+    // heating one (noted: the temperature is then too warm).
+    const Material &shaft = parameters.shaft;
+    if (shaft.joining_cooling_expansion() > 0.)
+      {
+        joining_cooling_expansion    = shaft.joining_cooling_expansion();
+        joining_cooling_from_heating = !(shaft.cooling_expansion > 0.);
+        joining_temperature_shaft
+          = joining_temperature(false,
+                                U,
+                                joining_clearance,
+                                D_F,
+                                joining_cooling_expansion,
+                                o.assembly_temperature);
+        joining_cooling_reachable
+          = joining_temperature_shaft >= coldest_coolant;
+      }
+    if (parameters.hub.temperature_limit > 0.)
+      {
+        hub_temperature_limit = parameters.hub.temperature_limit;
+        joining_hub_above_limit
+          = joining_temperature_hub > parameters.hub.temperature_limit;
+      }
+  }
+
+
+
+  std::vector<std::string>
+  OperationAnalysis::warnings(const Parameters &parameters) const
+  {
+    std::vector<std::string> list;
+    const auto               celsius = [](const double T) {
+      std::ostringstream t;
+      t << std::fixed << std::setprecision(1) << T << " C";
+      return t.str();
+    };
+    if (joining_hub_above_limit)
+      {
+        const Material &hub = parameters.hub;
+        std::string     alternative;
+        if (std::isnan(joining_temperature_shaft))
+          alternative = "; join by pressing or with a smaller interference";
+        else if (joining_cooling_reachable)
+          alternative = "; cooling the shaft to "
+                        + celsius(joining_temperature_shaft)
+                        + " instead avoids it";
+        else
+          {
+            // Both at once: the hub at its limit, the shaft in liquid
+            // nitrogen.
+            const double T_a = parameters.operation.assembly_temperature;
+            const double D_F = parameters.drawing.joint_diameter;
+            const double needed
+              = std::max(joining_interference, -joining_clearance)
+                + joining_clearance;
+            const double both
+              = D_F
+                * (hub.thermal_expansion * (hub.temperature_limit - T_a)
+                   + joining_cooling_expansion * (T_a - coldest_coolant));
+            std::ostringstream a;
+            a << std::setprecision(3)
+              << "; cooling the shaft instead is not reachable ("
+              << celsius(joining_temperature_shaft)
+              << ", below liquid nitrogen), and the hub at its limit with "
+                 "the shaft at -196 C together open "
+              << both << " mm of the " << needed << " mm needed"
+              << (both >= needed ? ": heating and cooling together suffice" :
+                                   ": press the parts together or reduce "
+                                   "the interference");
+            alternative = a.str();
+          }
+        list.push_back("heating the hub (" + hub.name + ") to "
+                       + celsius(joining_temperature_hub)
+                       + " for joining exceeds its temperature limit "
+                       + celsius(hub.temperature_limit) + ", "
+                       + hub.temperature_limit_reason + alternative);
+      }
+    // In service: a part held above its limit loses its heat treatment.
+    const OperationParameters &o = parameters.operation;
+    for (const auto &[part, m, T] :
+         {std::tuple<std::string, const Material *, double>{
+            "shaft", &parameters.shaft, o.shaft_temperature()},
+          {"hub", &parameters.hub, o.hub_temperature()}})
+      if (m->temperature_limit > 0. && T > m->temperature_limit)
+        list.push_back("in service the " + part + " (" + m->name + ") at "
+                       + celsius(T) + " is above its temperature limit "
+                       + celsius(m->temperature_limit) + ", "
+                       + m->temperature_limit_reason
+                       + ": its strength figures do not hold there");
+    return list;
   }
 
 
@@ -240,21 +324,31 @@ namespace coaxfit
         t << std::fixed << std::setprecision(1) << T << " C";
       return t.str();
     };
+    std::ostringstream limit;
+    if (joining_hub_above_limit)
+      limit << std::fixed << std::setprecision(1) << " (above "
+            << hub_temperature_limit << " C, the hub's temperature limit)";
+    // Without a limit of the material: hubs of quenched and tempered steel
+    // lose strength above their tempering temperature; 350 C is the usual
+    // limit for heating.
+    else if (std::isnan(hub_temperature_limit)
+             && joining_temperature_hub > 350.)
+      limit << " (above 350 C, the usual limit for heating a steel hub: "
+               "tempering and scaling; check the material)";
     s << std::setprecision(4) << "    joining (U_max " << joining_interference
       << " mm + clearance " << joining_clearance
       << " mm, DIN 7190): heat the hub to "
-      << temperature(joining_temperature_hub)
-      // Hubs of quenched and tempered steel lose strength above their
-      // tempering temperature; 350 C is the usual limit for heating.
-      << (joining_temperature_hub > 350. ?
-            " (above 350 C, the usual limit for heating a steel hub: "
-            "tempering and scaling; check the material)" :
-            "")
+      << temperature(joining_temperature_hub) << limit.str()
       << " or cool the shaft to " << temperature(joining_temperature_shaft)
       << (joining_temperature_shaft <= -273.15 ?
-            " (impossible: below absolute zero)" :
-          joining_temperature_shaft < -196. ?
-            " (below liquid nitrogen, -196 C)" :
+            " (not reachable: below absolute zero)" :
+          !joining_cooling_reachable ?
+            " (not reachable: below liquid nitrogen, -196 C)" :
+            "")
+      << (joining_cooling_from_heating ?
+            " (with the heating coefficient: Material/Shaft/Cooling "
+            "expansion not given, DIN 7190's undercooling coefficient is "
+            "smaller and the shaft colder)" :
             "")
       << '\n'
       << std::defaultfloat;
@@ -308,6 +402,11 @@ namespace coaxfit
     row("safety against yield, hub",
         assembly.safety_yield_hub,
         operation.safety_yield_hub);
+    if (!std::isnan(assembly.safety_fracture_hub)
+        || !std::isnan(operation.safety_fracture_hub))
+      row("safety against fracture (brittle), hub",
+          assembly.safety_fracture_hub,
+          operation.safety_fracture_hub);
     row("safety against yield, shaft",
         assembly.safety_yield_shaft,
         operation.safety_yield_shaft);

@@ -15,9 +15,17 @@ namespace coaxfit
     material_line(const Material &m)
     {
       std::ostringstream s;
+      const auto         given = [](const double x, const std::string &unit) {
+        return x > 0. ? design_figure(x) + unit : std::string("not given");
+      };
       s << m.name << ": E " << m.E << " MPa, nu " << m.nu << ", yield "
-        << (m.yield_strength > 0. ? design_figure(m.yield_strength) + " MPa" :
-                                    std::string("not given"));
+        << given(m.yield_strength, " MPa") << ", R_m "
+        << given(m.tensile_strength, " MPa") << ", " << to_string(m.kind)
+        << "; expansion heating " << given(m.thermal_expansion, "/K")
+        << ", cooling " << given(m.cooling_expansion, "/K")
+        << "; temperature limit " << given(m.temperature_limit, " C");
+      if (!m.temperature_limit_reason.empty())
+        s << " (" << m.temperature_limit_reason << ")";
       return s.str();
     }
 

@@ -61,7 +61,11 @@ namespace coaxfit
                            {"nu", m->nu},
                            {"yield_strength", m->yield_strength},
                            {"density", m->density},
-                           {"thermal_expansion", m->thermal_expansion}};
+                           {"thermal_expansion", m->thermal_expansion},
+                           {"tensile_strength", m->tensile_strength},
+                           {"cooling_expansion", m->cooling_expansion},
+                           {"temperature_limit", m->temperature_limit},
+                           {"kind", to_string(m->kind)}};
       j["material"] = materials;
       Json cells, dofs;
       for (const Body &body : results.scene.bodies)
@@ -191,7 +195,11 @@ namespace coaxfit
               {"safety_yield_hub_din", d.safety_yield_hub_din},
               {"edge_distance", d.edge_distance},
               {"check_points_mid_plane", checks},
-              {"surface_maxima", maxima}};
+              {"surface_maxima", maxima},
+              {"hoop_stress_max_hub", d.hoop_stress_max_hub},
+              {"hoop_stress_max_hub_din", d.hoop_stress_max_hub_din},
+              {"safety_fracture_hub", d.safety_fracture_hub},
+              {"safety_fracture_hub_din", d.safety_fracture_hub_din}};
     }
 
     Json
@@ -212,7 +220,8 @@ namespace coaxfit
               {"separated_length", s.separated_length},
               {"contact_lost", s.contact_lost},
               {"converged", s.converged},
-              {"iterations", s.iterations}};
+              {"iterations", s.iterations},
+              {"safety_fracture_hub", s.safety_fracture_hub}};
     }
 
     Json
@@ -253,7 +262,19 @@ namespace coaxfit
          {{"interference_max", a.joining_interference},
           {"clearance", a.joining_clearance},
           {"hub_temperature", a.joining_temperature_hub},
-          {"shaft_temperature", a.joining_temperature_shaft}}},
+          {"shaft_temperature", a.joining_temperature_shaft},
+          {"shaft_cooling_expansion", a.joining_cooling_expansion},
+          {"shaft_cooling_expansion_from_heating",
+           std::isnan(a.joining_temperature_shaft) ?
+             Json(nullptr) :
+             Json(a.joining_cooling_from_heating)},
+          {"shaft_cooling_reachable",
+           std::isnan(a.joining_temperature_shaft) ?
+             Json(nullptr) :
+             Json(a.joining_cooling_reachable)},
+          {"coldest_coolant", OperationAnalysis::coldest_coolant},
+          {"hub_temperature_limit", a.hub_temperature_limit},
+          {"hub_above_temperature_limit", a.joining_hub_above_limit}}},
         {"holds", a.holds},
         {"verdict", a.verdict}};
     }

@@ -352,8 +352,9 @@ namespace coaxfit
                         + " from the library: " + material_names(", ")
                         + " (doc/materials.md lists the values and their "
                           "sources), or custom. A name fills E, nu, Yield "
-                          "strength, Density and Thermal expansion; entries "
-                          "given in the file override it.",
+                          "strength, Tensile strength, Density, Thermal "
+                          "expansion, Cooling expansion, Temperature limit "
+                          "and Kind; entries given in the file override it.",
                       Patterns::Selection(material_names("|") + "|custom"));
     prm.add_parameter("E",
                       E,
@@ -388,10 +389,59 @@ namespace coaxfit
                       thermal_expansion,
                       "Linear thermal expansion coefficient of the "
                         + body_label
-                        + " in 1/K (reported; for loads of operation). 0: "
-                          "unknown (from Name if given). Allowed: 0 to "
-                          "1e-3.",
+                        + " in 1/K (reported; for loads of operation and "
+                          "for heating the part for joining). 0: unknown "
+                          "(from Name if given). Allowed: 0 to 1e-3.",
                       Patterns::Double(0., 1e-3));
+    prm.add_parameter("Tensile strength",
+                      tensile_strength,
+                      "Tensile strength R_m of the " + body_label
+                        + " in MPa, for the safety against fracture of a "
+                          "brittle material (Kind). 0: unknown (from Name if "
+                          "given). Allowed: 0 to 1e5.",
+                      Patterns::Double(0., 1e5));
+    prm.add_parameter("Cooling expansion",
+                      cooling_expansion,
+                      "Mean linear expansion coefficient of the " + body_label
+                        + " for undercooling, in 1/K, given positive (DIN "
+                          "7190 lists it negative: steel -8.5e-6, cast iron "
+                          "-8e-6, bronze -15e-6, aluminium alloys -18e-6); "
+                          "for the temperature to which the shaft is cooled "
+                          "for joining. Smaller than the heating "
+                          "coefficient, as metals shrink less per kelvin "
+                          "when cold. 0: not given (from Name if given; "
+                          "otherwise the Thermal expansion is used, which "
+                          "gives too warm a cooling temperature, and the "
+                          "output says so). Allowed: 0 to 1e-3.",
+                      Patterns::Double(0., 1e-3));
+    prm.add_parameter("Temperature limit",
+                      temperature_limit,
+                      "Temperature of the " + body_label
+                        + " in degrees C above which heating changes the "
+                          "material (the tempering temperature of a "
+                          "quenched and tempered or case-hardened steel, the "
+                          "artificial ageing temperature of an aluminium "
+                          "alloy): heating the hub above it for joining, or "
+                          "operating a part above it, gives a warning. 0: "
+                          "unknown (from Name if given; otherwise the hub "
+                          "is compared with 350 C, the usual limit for "
+                          "heating a steel hub). Allowed: 0 to 2000.",
+                      Patterns::Double(0., 2000.));
+    prm.add_parameter("Kind",
+                      kind_text,
+                      "How the " + body_label
+                        + " is assessed: metal (a ductile metal: von "
+                          "Mises against Yield strength), brittle (grey "
+                          "cast iron: a brittle hub is assessed by DIN "
+                          "7190's criterion for brittle materials, its "
+                          "largest hoop stress against Tensile strength, "
+                          "with the safety against fracture, instead of "
+                          "yield; needs Tensile strength), polymer (as a "
+                          "metal, but E below 1000 MPa is expected, no unit "
+                          "warning), or auto: the kind of the library "
+                          "material Name (EN-GJL-250 brittle, the others "
+                          "metal), metal for custom.",
+                      Patterns::Selection("auto|metal|brittle|polymer"));
   }
 
 
@@ -401,6 +451,12 @@ namespace coaxfit
   {
     require(E >= 1e-6 && E <= 1e9, path + "/E", E, "1e-6 <= E <= 1e9");
     require(nu > -1. && nu < 0.5, path + "/nu", nu, "-1 < nu < 0.5");
+    if (kind == MaterialKind::brittle && !(tensile_strength > 0.))
+      throw InputError("parameter " + path
+                       + "/Tensile strength = 0 (unknown) but the material "
+                         "is brittle (Kind): a brittle part is assessed "
+                         "against its tensile strength R_m, allowed is R_m "
+                         "> 0 in MPa (or a Name that gives it)");
   }
 
 
@@ -1019,6 +1075,40 @@ namespace coaxfit
                      + number(std::round(1e4 * U_w / D_F) / 100.)
                      + " % of the joint diameter (above 0.3 %: a unit slip, "
                        "or beyond the elastic range of most metals)");
+    // E typed in GPa (210 for steel): below any metal's 1000 MPa unless
+    // the part is declared a polymer; a named metal's E far from its own.
+    std::string low_E, far_E;
+    for (const auto &[name, m] :
+         {std::pair<std::string, const Material *>{"Shaft", &shaft},
+          {"Hub", &hub}})
+      {
+        const MaterialData *data = find_material(m->name);
+        if (m->E < 1000. && m->kind != MaterialKind::polymer)
+          low_E += std::string(low_E.empty() ? "" : ", ") + "Material/" + name
+                   + "/E = " + number(m->E);
+        else if (data != nullptr && m->E_given
+                 && std::max(m->E / data->E, data->E / m->E) > 2.)
+          far_E += std::string(far_E.empty() ? "" : "; ") + "Material/" + name
+                   + "/E = " + number(m->E) + " MPa for " + m->name
+                   + ", whose E is " + number(data->E) + " MPa (a factor "
+                   + number(std::max(m->E / data->E, data->E / m->E)) + ")";
+      }
+    if (!low_E.empty())
+      list.push_back(
+        low_E
+        + " MPa is below 1000 MPa, less than any metal (steel 210000 MPa): "
+          "E typed in GPa? E is in MPa; for a plastic part set "
+          "Material/<body>/Kind = polymer");
+    if (!far_E.empty())
+      list.push_back(far_E
+                     + ": more than a factor 2 from the library value (a "
+                       "unit slip: GPa or kPa for MPa?)");
+    if (shaft.kind == MaterialKind::brittle)
+      list.push_back(
+        "the shaft is brittle (Material/Shaft/Kind): DIN 7190's criterion "
+        "for brittle materials (hoop stress against R_m) is applied to the "
+        "hub only; the shaft, compressed at the joint, is checked against "
+        "its Yield strength as a metal");
     const double ratio = std::max(shaft.E / hub.E, hub.E / shaft.E);
     if (ratio > 1e3)
       list.push_back("Young's moduli of shaft (" + number(shaft.E)
@@ -1190,6 +1280,9 @@ namespace coaxfit
           prm.set("Yield strength", material->yield_strength);
           prm.set("Density", material->density);
           prm.set("Thermal expansion", material->thermal_expansion);
+          prm.set("Tensile strength", material->tensile_strength);
+          prm.set("Cooling expansion", material->cooling_expansion);
+          prm.set("Temperature limit", material->temperature_limit);
           prm.leave_subsection();
           prm.leave_subsection();
         }

@@ -72,6 +72,19 @@ namespace coaxfit
     double safety_yield_hub, safety_yield_hub_din;
     double edge_distance; ///< mm, in use
 
+    /**
+     * A brittle hub (Material/Hub/Kind): DIN 7190's criterion for brittle
+     * materials, the largest hoop (tangential) stress against the tensile
+     * strength R_m. FE: the largest hoop stress at the mid-plane check
+     * points and along the bore at least the edge distance from the end of
+     * the joint; DIN 7190: Lame's at the bore. Its yield safeties are then
+     * not given (NaN). NaN for a hub that is not brittle.
+     */
+    double hoop_stress_max_hub     = unknown;
+    double hoop_stress_max_hub_din = unknown;
+    double safety_fracture_hub     = unknown;
+    double safety_fracture_hub_din = unknown;
+
     /** hub bore, hub outer surface, shaft surface, shaft bore or axis. */
     std::vector<CheckPoint> check_points;
 

@@ -56,10 +56,11 @@ namespace coaxfit
       double       safety_slip = unknown, safety_slip_din = unknown;
       double       press_in_force = unknown, press_in_force_din = unknown;
       double       safety_yield_shaft = unknown, safety_yield_hub = unknown;
-      double       separated_length = 0.; ///< mm of the half joint
-      bool         contact_lost     = false;
-      bool         converged        = true;
-      unsigned int iterations       = 0;
+      double       safety_fracture_hub = unknown; ///< brittle hub only
+      double       separated_length    = 0.;      ///< mm of the half joint
+      bool         contact_lost        = false;
+      bool         converged           = true;
+      unsigned int iterations          = 0;
     };
 
     /**
@@ -93,7 +94,35 @@ namespace coaxfit
     double joining_clearance         = unknown; ///< mm
     double joining_temperature_hub   = unknown; ///< degrees C, hub heated
     double joining_temperature_shaft = unknown; ///< degrees C, shaft cooled
+    /** The coefficient (1/K) the shaft's cooling temperature used. */
+    double joining_cooling_expansion = unknown;
+    /**
+     * Whether that was the heating coefficient, as Material/Shaft/Cooling
+     * expansion was not given (the temperature is then too warm).
+     */
+    bool joining_cooling_from_heating = false;
+    /**
+     * Whether the shaft can be cooled to its joining temperature: not below
+     * -196 C, liquid nitrogen, the coldest coolant used for joining (and
+     * the range of DIN 7190's undercooling coefficients).
+     */
+    bool joining_cooling_reachable = true;
+    /** The hub's temperature limit (degrees C; NaN: not known). */
+    double hub_temperature_limit = unknown;
+    /** Whether the hub's joining temperature is above that limit. */
+    bool joining_hub_above_limit = false;
     /** @} */
+
+    /** The coldest coolant used for joining: liquid nitrogen (C). */
+    static constexpr double coldest_coolant = -196.;
+
+    /**
+     * Cautions of the joining temperatures and of the operating
+     * temperatures against the materials' temperature limits (one line
+     * each).
+     */
+    std::vector<std::string>
+    warnings(const Parameters &parameters) const;
 
     /**
      * Whether the fit holds in operation: the surfaces still touch and the

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <coaxfit/parameters/material_library.h>
 #include <coaxfit/parameters/scene_parameters.h>
 
 #include <set>
@@ -29,12 +30,24 @@ namespace coaxfit
     double      yield_strength    = 0.; ///< MPa; 0: unknown
     double      density           = 0.; ///< kg/m^3; 0: unknown
     double      thermal_expansion = 0.; ///< 1/K
+    double      tensile_strength  = 0.; ///< R_m, MPa; 0: unknown
+    /** 1/K, for undercooling (DIN 7190), positive; 0: not given. */
+    double cooling_expansion = 0.;
+    /** Degrees C above which heating changes the material; 0: unknown. */
+    double      temperature_limit = 0.;
+    std::string temperature_limit_reason; ///< from the library, or empty
+    std::string kind_text = "auto";       ///< the entry Kind as given
+    /** The kind in use: Kind, or for auto the library's (metal if none). */
+    MaterialKind kind = MaterialKind::metal;
+    /** Whether E was given in the file (not filled in from the Name). */
+    bool E_given = true;
 
     /**
-     * Declare `Name`, `E`, `nu`, `Yield strength`, `Density` and `Thermal
-     * expansion`, bound to the members, for the body named @p body_label in
-     * the documentation. E and nu define the scene: they must be given,
-     * directly or by a Name.
+     * Declare `Name`, `E`, `nu`, `Yield strength`, `Tensile strength`,
+     * `Density`, `Thermal expansion`, `Cooling expansion`, `Temperature
+     * limit` and `Kind`, bound to the members, for the body named
+     * @p body_label in the documentation. E and nu define the scene: they
+     * must be given, directly or by a Name.
      */
     void
     declare_parameters(ParameterHandler &prm, const std::string &body_label);
@@ -43,6 +56,16 @@ namespace coaxfit
      * subsection in messages. */
     void
     validate(const std::string &path) const;
+
+    /**
+     * The expansion coefficient (1/K) for cooling the part for joining:
+     * Cooling expansion, or the heating coefficient if it is not given.
+     */
+    double
+    joining_cooling_expansion() const
+    {
+      return cooling_expansion > 0. ? cooling_expansion : thermal_expansion;
+    }
 
     /** First Lame constant lambda (MPa). */
     double

@@ -185,6 +185,9 @@ main()
   run("joining_clearance_too_large",
       "--set \"Operation/Joining clearance=50\" "
         + file_with("joining_clearance_too_large", ""));
+  run("slip_safety_below_one",
+      file_with("slip_safety_below_one",
+                "subsection Design\n  set Slip safety = 0.9\nend\n"));
   run("case_without_iso_fit",
       fit("case_without_iso_fit", "  set Case = max\n"));
   run("material_unknown",

@@ -538,9 +538,13 @@ namespace coaxfit
       warning_list.insert(warning_list.end(), list.begin(), list.end());
     if (operation->has_loads && !operation->holds)
       warning_list.push_back(operation->verdict);
+    verdict = std::make_unique<Verdict>(parameters,
+                                        *operation,
+                                        coupling->converged());
     print_report(pressure, complementarity, warning_list);
     print_design(out, parameters, *design);
     operation->print(out);
+    out << "  " << verdict->line() << '\n';
 
     std::map<std::string, double> timing;
     const RunResults              results{parameters,
@@ -554,7 +558,8 @@ namespace coaxfit
                              *design,
                              *operation,
                              timing,
-                             warning_list};
+                             warning_list,
+                             *verdict};
     std::vector<std::string>      lines;
     {
       TimerOutput::Scope scope(timer, "output");
@@ -723,6 +728,7 @@ namespace coaxfit
     scene.set_loads(parameters);
     coupling.reset();
     design.reset();
+    verdict.reset();
     twin_state = TwinState::stale;
     setup_loads();
   }

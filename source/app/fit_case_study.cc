@@ -25,7 +25,7 @@ namespace coaxfit
   std::vector<std::string>
   FitCaseStudy::file_names()
   {
-    return {"min", "mean", "max", "fit_cases.csv"};
+    return {"min", "mean", "max", "fit_cases.csv", "report.md"};
   }
 
 
@@ -49,7 +49,9 @@ namespace coaxfit
             "safety_yield_hub",
             "safety_yield_hub_din",
             "safety_yield_shaft",
-            "safety_yield_shaft_din"};
+            "safety_yield_shaft_din",
+            "safety_fracture_hub",
+            "safety_fracture_hub_din"};
   }
 
 
@@ -90,7 +92,10 @@ namespace coaxfit
                          d.safety_yield_hub,
                          d.safety_yield_hub_din,
                          d.safety_yield_shaft,
-                         d.safety_yield_shaft_din}});
+                         d.safety_yield_shaft_din,
+                         d.safety_fracture_hub,
+                         d.safety_fracture_hub_din},
+                        fit.get_verdict().failed});
         all_converged = all_converged && converged;
       }
     output_results(directory.staging_path());
@@ -156,8 +161,61 @@ namespace coaxfit
           }
         table << '\n';
       }
-    table << "  fit_cases.csv: the design figures of the three cases\n";
+    table << verdict_line() << '\n'
+          << "  fit_cases.csv: the design figures of the three cases\n"
+          << "  report.md: the verdict and the table, with links to the "
+             "cases' reports\n";
     out << table.str();
+
+    const std::string report_name = directory + "/report.md";
+    std::ofstream     report      = open_result_file(report_name);
+    report << "# coaxfit report: fit " << parameters.fit_limits.iso_fit
+           << " at D_F = " << 2. * parameters.geometry.R1
+           << " mm, cases min, mean, max\n\n## Verdict\n\n"
+           << verdict_line() << "\n\n## The three cases\n\n| figure |";
+    for (const Row &row : rows)
+      report << ' ' << to_string(row.fit_case) << " |";
+    report << "\n|---|";
+    for (unsigned int c = 0; c < rows.size(); ++c)
+      report << "---:|";
+    report << "\n| converged (steps) |";
+    for (const Row &row : rows)
+      report << ' ' << (row.converged ? "yes (" : "NO (") << row.steps << ") |";
+    report << '\n';
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      {
+        report << "| " << columns[i] << " |";
+        for (const Row &row : rows)
+          {
+            report << ' ';
+            if (std::isfinite(row.values[i]))
+              report << std::setprecision(5) << row.values[i];
+            else
+              report << '-';
+            report << " |";
+          }
+        report << '\n';
+      }
+    report << "\nEach case in full: ";
+    for (const Row &row : rows)
+      report << '[' << to_string(row.fit_case) << "]("
+             << to_string(row.fit_case) << "/report.md)"
+             << (&row == &rows.back() ? ".\n" : ", ");
+    close_result_file(report, report_name);
+  }
+
+
+
+  std::string
+  FitCaseStudy::verdict_line() const
+  {
+    std::string failed;
+    for (const Row &row : rows)
+      for (const std::string &f : row.failed)
+        failed
+          += (failed.empty() ? "" : "; ") + to_string(row.fit_case) + ": " + f;
+    return "Verdict (cases min, mean, max): "
+           + (failed.empty() ? std::string("OK") : "FAILED: " + failed);
   }
 
 

@@ -159,9 +159,16 @@ namespace coaxfit
             hoop_stress_max_hub = std::max(hoop_stress_max_hub, s.hoop());
         hoop_stress_max_hub_din
           = std::max(check_points[0].din.hoop, check_points[1].din.hoop);
-        const double R_m        = parameters.hub.tensile_strength;
-        safety_fracture_hub     = safety(R_m, hoop_stress_max_hub);
-        safety_fracture_hub_din = safety(R_m, hoop_stress_max_hub_din);
+        // No tensile hoop stress anywhere (a hub squeezed from outside):
+        // nothing to crack, an infinite safety.
+        const double R_m      = parameters.hub.tensile_strength;
+        const auto   fracture = [R_m](const double hoop) {
+          return R_m > 0. && hoop <= 0. ?
+                     std::numeric_limits<double>::infinity() :
+                     safety(R_m, hoop);
+        };
+        safety_fracture_hub     = fracture(hoop_stress_max_hub);
+        safety_fracture_hub_din = fracture(hoop_stress_max_hub_din);
         safety_yield_hub = safety_yield_hub_din = FitDesign::unknown;
       }
   }

@@ -365,7 +365,7 @@ namespace coaxfit
       if (std::isnan(x))
         f << "-";
       else if (std::isinf(x))
-        f << "never";
+        f << "infinite";
       else
         f << std::setprecision(5) << x;
       return f.str();

@@ -79,6 +79,22 @@ namespace coaxfit
         << (results.solver.converged() ? "Converged" : "**NOT converged**")
         << " in " << results.solver.n_steps()
         << " coupling steps. Units: mm, MPa, N, N m.\n\n";
+    out << "## Verdict\n\n";
+    if (results.verdict.ok())
+      out << "OK: the surfaces touch, the joint carries the required loads "
+             "with Design/Slip safety = "
+          << p.design.slip_safety
+          << ", shaft and hub keep Design/Yield safety = "
+          << p.design.yield_safety
+          << " at assembly and in service, and the joint can be "
+             "assembled.\n\n";
+    else
+      {
+        out << "**FAILED:**\n\n";
+        for (const std::string &f : results.verdict.failed)
+          out << "- " << f << '\n';
+        out << '\n';
+      }
     write_inputs(out, results);
 
     out << "## Design: finite elements next to DIN 7190\n\n"

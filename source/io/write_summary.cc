@@ -316,6 +316,8 @@ namespace coaxfit
          {"max_pressure_gap_relative",
           results.complementarity.max_pressure_gap_relative}};
     j["warnings"] = results.warnings;
+    j["verdict"]
+      = {{"ok", results.verdict.ok()}, {"failed", results.verdict.failed}};
     Json timing(results.timing);
     timing["units"] = "s";
     j["timing"]     = timing;

@@ -217,6 +217,31 @@ namespace coaxfit
                       "Axial force the joint must transmit, in N. 0: none. "
                       "Allowed: 0 to 1e12.",
                       Patterns::Double(0., 1e12));
+    prm.add_parameter("Slip safety",
+                      slip_safety,
+                      "The safety against slip the joint must have, for "
+                      "the verdict: it fails where the transmissible torque "
+                      "and axial force over the required ones (Required "
+                      "torque, Required axial force) fall below this, at "
+                      "assembly or in service. 1: the joint must not slip; "
+                      "designs commonly ask more (1.5 and above): set the "
+                      "value your rules require. Allowed: 1 to 100.",
+                      Patterns::Double(1., 100.));
+    prm.add_parameter("Yield safety",
+                      yield_safety,
+                      "The safety against yield (yield strength over the "
+                      "von Mises stress away from the ends of the joint) "
+                      "that shaft and hub must have, for the verdict, at "
+                      "assembly and in service. 1: they must not yield. "
+                      "Allowed: 1 to 100.",
+                      Patterns::Double(1., 100.));
+    prm.add_parameter("Fracture safety",
+                      fracture_safety,
+                      "The safety against fracture (tensile strength over "
+                      "the largest hoop stress at the bore) that a brittle "
+                      "hub (Material/Hub/Kind) must have, for the verdict. "
+                      "Allowed: 1 to 100.",
+                      Patterns::Double(1., 100.));
     prm.add_parameter("Edge distance",
                       edge_distance,
                       "Distance in mm from the hub's edge (where the "

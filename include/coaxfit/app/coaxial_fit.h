@@ -12,6 +12,7 @@
 #include <coaxfit/design/fit_design.h>
 #include <coaxfit/design/pressure_summary.h>
 #include <coaxfit/design/state_solver.h>
+#include <coaxfit/design/verdict.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/parameters/parameters.h>
 #include <coaxfit/solvers/body_solver.h>
@@ -135,6 +136,13 @@ namespace coaxfit
     get_design() const
     {
       return *design;
+    }
+
+    /** The verdict (after output_results()). */
+    const Verdict &
+    get_verdict() const
+    {
+      return *verdict;
     }
 
     /** Pressures of the current state (after solve()). */
@@ -266,6 +274,7 @@ namespace coaxfit
     std::unique_ptr<ContactInterface> interface;
     std::unique_ptr<InterfaceSolver>  coupling;
     std::unique_ptr<FitDesign>        design;
+    std::unique_ptr<Verdict>          verdict;
     /** Each body's field: the contact answer plus its loads' answer. */
     std::vector<Vector<double>> fields;
     SolverStatistics            statistics; ///< after solve()

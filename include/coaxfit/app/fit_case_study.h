@@ -39,10 +39,11 @@ namespace coaxfit
     /** One line of the table. */
     struct Row
     {
-      FitCase             fit_case;
-      bool                converged;
-      unsigned int        steps;
-      std::vector<double> values; ///< in the order of column_names()
+      FitCase                  fit_case;
+      bool                     converged;
+      unsigned int             steps;
+      std::vector<double>      values; ///< in the order of column_names()
+      std::vector<std::string> failed; ///< the case's failed criteria
     };
 
     /** The names (with units) of the figures of a Row. */
@@ -57,7 +58,18 @@ namespace coaxfit
     }
 
   private:
-    /** Write fit_cases.csv into @p directory and print the table. */
+    /**
+     * The verdict of the three cases: OK if each case is, else every
+     * failed criterion, prefixed by its case.
+     */
+    std::string
+    verdict_line() const;
+
+    /**
+     * Write fit_cases.csv and report.md (the verdict and the table, with
+     * links to each case's report) into @p directory and print the table
+     * and the verdict.
+     */
     void
     output_results(const std::string &directory) const;
 

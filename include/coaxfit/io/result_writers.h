@@ -9,6 +9,7 @@
 #include <coaxfit/design/fit_design.h>
 #include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/design/pressure_summary.h>
+#include <coaxfit/design/verdict.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/parameters/parameters.h>
 
@@ -36,6 +37,7 @@ namespace coaxfit
     const OperationAnalysis             &operation;
     const std::map<std::string, double> &timing;   ///< wall times (s)
     const std::vector<std::string>      &warnings; ///< one line each
+    const Verdict                       &verdict;
   };
 
   /**

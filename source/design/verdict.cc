@@ -1,0 +1,139 @@
+#include <coaxfit/design/verdict.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** @p x with 3 significant digits. */
+    std::string
+    figure(const double x)
+    {
+      std::ostringstream text;
+      text.precision(3);
+      text << x;
+      return text.str();
+    }
+
+    /** A temperature in degrees C with one decimal. */
+    std::string
+    celsius(const double T)
+    {
+      std::ostringstream text;
+      text << std::fixed << std::setprecision(1) << T << " C";
+      return text.str();
+    }
+  } // namespace
+
+
+
+  Verdict::Verdict(const Parameters        &parameters,
+                   const OperationAnalysis &operation,
+                   const bool               converged)
+  {
+    const DesignParameters &design = parameters.design;
+    if (!converged)
+      failed.push_back("the coupling did not converge (the figures are not "
+                       "those of the solution)");
+
+    // The states: at assembly and in service (the same state without loads
+    // of operation; then no state is named).
+    std::vector<const OperationAnalysis::State *> states{&operation.assembly};
+    if (operation.has_loads)
+      states.push_back(&operation.operation);
+    const auto where = [&](const OperationAnalysis::State &state) {
+      return operation.has_loads ?
+               (state.name == "assembly" ? " at assembly" : " in service") :
+               std::string();
+    };
+    // The state with the smallest value of @p safety (NaN: not known, and
+    // left out); null if none is known.
+    const auto worst = [&](double OperationAnalysis::State::*safety) {
+      const OperationAnalysis::State *state = nullptr;
+      for (const OperationAnalysis::State *s : states)
+        if (!std::isnan(s->*safety)
+            && (state == nullptr || s->*safety < state->*safety))
+          state = s;
+      return state;
+    };
+
+    for (const OperationAnalysis::State *s : states)
+      if (s->contact_lost)
+        failed.push_back("contact lost" + where(*s)
+                         + ": the surfaces do not touch");
+
+    // Slip in the worst state whose surfaces still touch (a lost contact
+    // is said above).
+    if (design.required_torque > 0. || design.required_axial_force > 0.)
+      {
+        const OperationAnalysis::State *s = nullptr;
+        for (const OperationAnalysis::State *t : states)
+          if (!t->contact_lost && !std::isnan(t->safety_slip)
+              && (s == nullptr || t->safety_slip < s->safety_slip))
+            s = t;
+        if (s != nullptr && s->safety_slip < design.slip_safety)
+          failed.push_back("slip" + where(*s) + ": safety against slip "
+                           + figure(s->safety_slip) + " < "
+                           + figure(design.slip_safety)
+                           + " (Design/Slip safety)");
+      }
+
+    const bool brittle_hub
+      = !std::isnan(operation.assembly.safety_fracture_hub);
+    const std::vector<
+      std::pair<std::string, double OperationAnalysis::State::*>>
+      parts{{"shaft", &OperationAnalysis::State::safety_yield_shaft},
+            {"hub", &OperationAnalysis::State::safety_yield_hub}};
+    for (const auto &[part, safety] : parts)
+      if (!(part == "hub" && brittle_hub))
+        if (const auto *s = worst(safety))
+          if (s->*safety < design.yield_safety)
+            failed.push_back("yield of the " + part + where(*s)
+                             + ": safety against yield " + figure(s->*safety)
+                             + " < " + figure(design.yield_safety)
+                             + " (Design/Yield safety)");
+    if (brittle_hub)
+      if (const auto *s = worst(&OperationAnalysis::State::safety_fracture_hub))
+        if (s->safety_fracture_hub < design.fracture_safety)
+          failed.push_back("fracture of the brittle hub" + where(*s)
+                           + ": safety against fracture "
+                           + figure(s->safety_fracture_hub) + " < "
+                           + figure(design.fracture_safety)
+                           + " (Design/Fracture safety)");
+
+    // Joining: either way is enough.
+    const bool heating_known = !std::isnan(operation.joining_temperature_hub);
+    const bool cooling_known = !std::isnan(operation.joining_temperature_shaft);
+    const bool heating_ok = heating_known && !operation.joining_hub_above_limit;
+    const bool cooling_ok
+      = cooling_known && operation.joining_cooling_reachable;
+    if ((heating_known || cooling_known) && !heating_ok && !cooling_ok)
+      failed.push_back(
+        "joining temperature not reachable: the hub "
+        + (heating_known ? "at " + celsius(operation.joining_temperature_hub)
+                             + " is above its temperature limit" :
+                           std::string("cannot be heated (no thermal "
+                                       "expansion)"))
+        + ", the shaft "
+        + (cooling_known ? "at " + celsius(operation.joining_temperature_shaft)
+                             + " is below liquid nitrogen" :
+                           std::string("cannot be cooled (no thermal "
+                                       "expansion)")));
+  }
+
+
+
+  std::string
+  Verdict::line() const
+  {
+    if (ok())
+      return "Verdict: OK";
+    std::string text = "Verdict: FAILED: ";
+    for (unsigned int i = 0; i < failed.size(); ++i)
+      text += (i > 0 ? "; " : "") + failed[i];
+    return text;
+  }
+} // namespace coaxfit

@@ -12,6 +12,31 @@
 
 namespace coaxfit
 {
+  namespace
+  {
+    /** A figure of the table: 5 significant digits, "-" if not finite. */
+    std::string
+    value_cell(const double value)
+    {
+      std::ostringstream cell;
+      if (std::isfinite(value))
+        cell << std::setprecision(5) << value;
+      else
+        cell << '-';
+      return cell.str();
+    }
+
+    /** "yes (steps)" or "NO (steps)". */
+    std::string
+    converged_cell(const FitCaseStudy::Row &row)
+    {
+      return (row.converged ? "yes (" : "NO (") + std::to_string(row.steps)
+             + ")";
+    }
+  } // namespace
+
+
+
   FitCaseStudy::FitCaseStudy(const Parameters &parameters,
                              std::ostream     &out,
                              const bool        verbose)
@@ -143,22 +168,14 @@ namespace coaxfit
     table << "\n    " << std::left << std::setw(28) << "converged (steps)"
           << std::right;
     for (const Row &row : rows)
-      table << std::setw(12)
-            << ((row.converged ? "yes (" : "NO (") + std::to_string(row.steps)
-                + ")");
+      table << std::setw(12) << converged_cell(row);
     table << '\n';
     for (unsigned int i = 0; i < columns.size(); ++i)
       {
         table << "    " << std::left << std::setw(28) << columns[i]
               << std::right;
         for (const Row &row : rows)
-          {
-            table << std::setw(12);
-            if (std::isfinite(row.values[i]))
-              table << std::setprecision(5) << row.values[i];
-            else
-              table << "-";
-          }
+          table << std::setw(12) << value_cell(row.values[i]);
         table << '\n';
       }
     table << verdict_line() << '\n'
@@ -180,20 +197,13 @@ namespace coaxfit
       report << "---:|";
     report << "\n| converged (steps) |";
     for (const Row &row : rows)
-      report << ' ' << (row.converged ? "yes (" : "NO (") << row.steps << ") |";
+      report << ' ' << converged_cell(row) << " |";
     report << '\n';
     for (unsigned int i = 0; i < columns.size(); ++i)
       {
         report << "| " << columns[i] << " |";
         for (const Row &row : rows)
-          {
-            report << ' ';
-            if (std::isfinite(row.values[i]))
-              report << std::setprecision(5) << row.values[i];
-            else
-              report << '-';
-            report << " |";
-          }
+          report << ' ' << value_cell(row.values[i]) << " |";
         report << '\n';
       }
     report << "\nEach case in full: ";

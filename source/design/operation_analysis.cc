@@ -38,6 +38,16 @@ namespace coaxfit
 
 
 
+  std::string
+  celsius(const double T)
+  {
+    std::ostringstream t;
+    t << std::fixed << std::setprecision(1) << T << " C";
+    return t.str();
+  }
+
+
+
   OperationAnalysis::State
   state_figures(const std::string &name, const SolvedState &state)
   {
@@ -247,11 +257,6 @@ namespace coaxfit
   OperationAnalysis::warnings(const Parameters &parameters) const
   {
     std::vector<std::string> list;
-    const auto               celsius = [](const double T) {
-      std::ostringstream t;
-      t << std::fixed << std::setprecision(1) << T << " C";
-      return t.str();
-    };
     if (joining_hub_above_limit)
       {
         const Material &hub = parameters.hub;
@@ -317,12 +322,8 @@ namespace coaxfit
         && std::isnan(joining_temperature_shaft))
       return; // no thermal expansion known
     const auto temperature = [](const double T) {
-      std::ostringstream t;
-      if (std::isnan(T))
-        t << "- (no thermal expansion)";
-      else
-        t << std::fixed << std::setprecision(1) << T << " C";
-      return t.str();
+      return std::isnan(T) ? std::string("- (no thermal expansion)") :
+                             celsius(T);
     };
     std::ostringstream limit;
     if (joining_hub_above_limit)

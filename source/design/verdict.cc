@@ -1,7 +1,6 @@
 #include <coaxfit/design/verdict.h>
 
 #include <cmath>
-#include <iomanip>
 #include <sstream>
 
 namespace coaxfit
@@ -15,15 +14,6 @@ namespace coaxfit
       std::ostringstream text;
       text.precision(3);
       text << x;
-      return text.str();
-    }
-
-    /** A temperature in degrees C with one decimal. */
-    std::string
-    celsius(const double T)
-    {
-      std::ostringstream text;
-      text << std::fixed << std::setprecision(1) << T << " C";
       return text.str();
     }
   } // namespace
@@ -50,11 +40,13 @@ namespace coaxfit
                std::string();
     };
     // The state with the smallest value of @p safety (NaN: not known, and
-    // left out); null if none is known.
-    const auto worst = [&](double OperationAnalysis::State::*safety) {
+    // left out; with @p touching_only also a state whose contact is lost);
+    // null if none is left.
+    const auto worst = [&](double OperationAnalysis::State::*safety,
+                           const bool touching_only = false) {
       const OperationAnalysis::State *state = nullptr;
       for (const OperationAnalysis::State *s : states)
-        if (!std::isnan(s->*safety)
+        if (!std::isnan(s->*safety) && !(touching_only && s->contact_lost)
             && (state == nullptr || s->*safety < state->*safety))
           state = s;
       return state;
@@ -68,18 +60,12 @@ namespace coaxfit
     // Slip in the worst state whose surfaces still touch (a lost contact
     // is said above).
     if (design.required_torque > 0. || design.required_axial_force > 0.)
-      {
-        const OperationAnalysis::State *s = nullptr;
-        for (const OperationAnalysis::State *t : states)
-          if (!t->contact_lost && !std::isnan(t->safety_slip)
-              && (s == nullptr || t->safety_slip < s->safety_slip))
-            s = t;
-        if (s != nullptr && s->safety_slip < design.slip_safety)
+      if (const auto *s = worst(&OperationAnalysis::State::safety_slip, true))
+        if (s->safety_slip < design.slip_safety)
           failed.push_back("slip" + where(*s) + ": safety against slip "
                            + figure(s->safety_slip) + " < "
                            + figure(design.slip_safety)
                            + " (Design/Slip safety)");
-      }
 
     const bool brittle_hub
       = !std::isnan(operation.assembly.safety_fracture_hub);

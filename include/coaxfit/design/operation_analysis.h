@@ -154,6 +154,10 @@ namespace coaxfit
     compute_joining(const Parameters &parameters);
   };
 
+  /** A temperature @p T in degrees C with one decimal: "226.2 C". */
+  std::string
+  celsius(double T);
+
   /** The figures of the solved state @p state, called @p name. */
   OperationAnalysis::State
   state_figures(const std::string &name, const SolvedState &state);

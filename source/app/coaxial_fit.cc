@@ -91,12 +91,10 @@ namespace coaxfit
         TimerOutput::Scope scope(timer, "loads");
         set_blas_threads(1);
         for_each_concurrently(scene.bodies, [](Body &body) {
-          const BodyDiscretization &d = *body.discretization;
-          body.load_field
-            = body.solver->solve_load_field(d.assemble_load_vector(d.load()));
+          body.load_field = body.answer_to(body.discretization->load());
         });
       }
-    const JointSides &joint = scene.joints[0];
+    const JointSides &joint = scene.joint();
     const Body       &inner = scene.inner(joint), &outer = scene.outer(joint);
     interface = std::make_unique<ContactInterface>(
       *inner.discretization,
@@ -113,12 +111,11 @@ namespace coaxfit
                           const bool              unilateral,
                           const bool              start_from_coarse)
   {
-    const JointSides &joint = scene.joints[0];
+    const JointSides &joint = scene.joint();
     Body &inner = scene.bodies[joint.inner], &outer = scene.bodies[joint.outer];
     if (parameters.solver.method == SolverMethod::monolithic)
       return std::make_unique<MonolithicSolver>(
-        *inner.discretization,
-        *outer.discretization,
+        scene,
         contact,
         UnilateralActiveSet(contact.n_points(),
                             unilateral,
@@ -203,7 +200,7 @@ namespace coaxfit
                                  g.contact_radius(),
                                  g.r_inner > 0. ? g.r_outer - g.r_inner : 0.};
     };
-    return {{side(scene.joints[0].inner), side(scene.joints[0].outer)}};
+    return {{side(scene.joint().inner), side(scene.joint().outer)}};
   }
 
 
@@ -259,8 +256,8 @@ namespace coaxfit
     coarse_twin->condense();
     const Scene &coarse = coarse_twin->scene;
     return std::make_unique<CoarseInterfaceModel>(
-      *coarse.inner(coarse.joints[0]).condensed,
-      *coarse.outer(coarse.joints[0]).condensed,
+      *coarse.inner(coarse.joint()).condensed,
+      *coarse.outer(coarse.joint()).condensed,
       *coarse_twin->interface,
       contact,
       short_wave_compliances(),
@@ -276,7 +273,7 @@ namespace coaxfit
     TimerOutput::Scope scope(timer, "coupling");
     const bool         converged = coupling->run(progress);
     // The contact answer plus each body's answer to its own loads.
-    const JointSides &joint = scene.joints[0];
+    const JointSides &joint = scene.joint();
     fields.resize(scene.bodies.size());
     std::tie(fields[joint.inner], fields[joint.outer])
       = coupling->solve_fields();
@@ -301,7 +298,7 @@ namespace coaxfit
                                 const bool            unilateral)
   {
     const Vector<double>   zero(interference.size());
-    const JointSides      &joint = scene.joints[0];
+    const JointSides      &joint = scene.joint();
     const ContactInterface contact(*scene.inner(joint).discretization,
                                    *scene.outer(joint).discretization,
                                    0.,
@@ -323,13 +320,12 @@ namespace coaxfit
     AssertDimension(loads.size(), scene.bodies.size());
     std::vector<Vector<double>> u_r(scene.bodies.size());
     for_each_concurrently(scene.bodies, [&](Body &body) {
-      const unsigned int        b = &body - scene.bodies.data();
-      const BodyDiscretization &d = *body.discretization;
-      u_r[b]                      = d.interface_radial_values(
-        body.solver->solve_load_field(d.assemble_load_vector(loads[b])));
+      const unsigned int b = &body - scene.bodies.data();
+      u_r[b]               = body.discretization->interface_radial_values(
+        body.answer_to(loads[b]));
     });
-    Vector<double> change(u_r[scene.joints[0].inner]);
-    change -= u_r[scene.joints[0].outer];
+    Vector<double> change(u_r[scene.joint().inner]);
+    change -= u_r[scene.joint().outer];
     return change;
   }
 
@@ -338,7 +334,7 @@ namespace coaxfit
   FitDesign
   CoaxialFit::state_design() const
   {
-    const JointSides &joint = scene.joints[0];
+    const JointSides &joint = scene.joint();
     return FitDesign(parameters,
                      *scene.inner(joint).discretization,
                      fields[joint.inner],

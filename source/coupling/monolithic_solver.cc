@@ -12,14 +12,13 @@
 
 namespace coaxfit
 {
-  MonolithicSolver::MonolithicSolver(const BodyDiscretization  &shaft,
-                                     const BodyDiscretization  &hub,
+  MonolithicSolver::MonolithicSolver(const Scene               &scene,
                                      const ContactInterface    &interface,
                                      const UnilateralActiveSet &active_set,
                                      const unsigned int         max_steps)
     : InterfaceSolver(active_set)
-    , shaft(shaft)
-    , hub(hub)
+    , shaft(*scene.inner(scene.joint()).discretization)
+    , hub(*scene.outer(scene.joint()).discretization)
     , interface(interface)
     , max_steps(max_steps)
   {}
@@ -121,13 +120,14 @@ namespace coaxfit
     const std::vector<bool> all(dofs1.size(), true);
     const Vector<double>    no_force(dofs1.size());
     Vector<double>          hub_force;
-    shaft.interface_values(all, no_force, x1, u1, force);
-    hub.interface_values(all, no_force, x2, u2, hub_force);
-    const double magnitude = std::max(interface.max_pressure(force),
+    shaft.interface_values(all, no_force, x1, state.u1, state.force);
+    hub.interface_values(all, no_force, x2, state.u2, hub_force);
+    const double magnitude = std::max(interface.max_pressure(state.force),
                                       interface.max_pressure(hub_force));
-    last_traction_mismatch
+    state.traction_mismatch
       = magnitude > 0. ?
-          interface.max_pressure_difference(force, hub_force) / magnitude :
+          interface.max_pressure_difference(state.force, hub_force)
+            / magnitude :
           0.;
   }
 
@@ -143,23 +143,26 @@ namespace coaxfit
     for (unsigned int step = 1; step <= max_steps; ++step)
       {
         solve_tied();
-        last_displacement_mismatch
-          = interface.relative_gap_residual(u1, u2, active_set.in_contact());
+        state.displacement_mismatch
+          = interface.relative_gap_residual(state.u1,
+                                            state.u2,
+                                            active_set.in_contact());
         // Released points carry no force: the reaction there is zero.
-        for (unsigned int i = 0; i < force.size(); ++i)
+        for (unsigned int i = 0; i < state.force.size(); ++i)
           if (!active_set.in_contact()[i])
-            force[i] = 0.;
-        const bool changed = active_set.update(force, interface.gap(u1, u2));
+            state.force[i] = 0.;
+        const bool changed
+          = active_set.update(state.force, interface.gap(state.u1, state.u2));
         history_rows.push_back({step,
                                 true,
                                 0.,
-                                last_displacement_mismatch,
-                                last_traction_mismatch,
+                                state.displacement_mismatch,
+                                state.traction_mismatch,
                                 active_set.n_separated()});
         if (progress)
           *progress << std::setw(6) << step << "            " << std::scientific
-                    << std::setprecision(3) << last_displacement_mismatch
-                    << "   " << last_traction_mismatch << "   " << std::setw(4)
+                    << std::setprecision(3) << state.displacement_mismatch
+                    << "   " << state.traction_mismatch << "   " << std::setw(4)
                     << active_set.n_separated() << std::endl;
         if (!changed)
           {

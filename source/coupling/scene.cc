@@ -25,6 +25,25 @@ namespace coaxfit
 
 
 
+  Vector<double>
+  Body::answer_to(const BodyLoad &load) const
+  {
+    return solver->solve_load_field(discretization->assemble_load_vector(load));
+  }
+
+
+
+  const JointSides &
+  Scene::joint() const
+  {
+    if (joints.size() != 1)
+      throw std::logic_error("a scene of " + std::to_string(joints.size())
+                             + " joints where one was expected");
+    return joints[0];
+  }
+
+
+
   std::string
   Body::key_of(const std::string &name)
   {

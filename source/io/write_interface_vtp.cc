@@ -25,7 +25,7 @@ namespace coaxfit
     // inner side's plus its oversize d (it is made larger than the mesh
     // at the joint radius, see AssembledDisplacement).
     const Scene      &scene = results.scene;
-    const JointSides &joint = scene.joints[0];
+    const JointSides &joint = scene.joint();
     const auto surface = [&](const unsigned int body, const unsigned int i) {
       const BodyDiscretization &d     = *scene.bodies[body].discretization;
       const Vector<double>     &field = results.fields[body];

@@ -35,6 +35,19 @@ namespace coaxfit
   };
 
   /**
+   * The state of the interface after a step of a solver: the nodal contact
+   * force, the radial displacements of the two sides on S and the latest
+   * relative mismatches (those of the last step of each kind).
+   */
+  struct InterfaceState
+  {
+    Vector<double> force;  ///< nodal contact force (compression +)
+    Vector<double> u1, u2; ///< u_r of the inner and the outer side on S
+    double displacement_mismatch = std::numeric_limits<double>::infinity();
+    double traction_mismatch     = std::numeric_limits<double>::infinity();
+  };
+
+  /**
    * What a solver reports about itself: its method and controller, and
    * counts of its work (factorizations, solves) by name.
    */
@@ -68,9 +81,7 @@ namespace coaxfit
   {
   public:
     explicit InterfaceSolver(const UnilateralActiveSet &active_set)
-      : last_displacement_mismatch(std::numeric_limits<double>::infinity())
-      , last_traction_mismatch(std::numeric_limits<double>::infinity())
-      , active_set(active_set)
+      : active_set(active_set)
     {}
 
     virtual ~InterfaceSolver() = default;
@@ -132,19 +143,19 @@ namespace coaxfit
     const Vector<double> &
     contact_force() const
     {
-      return force;
+      return state.force;
     }
 
     const Vector<double> &
     u_shaft() const
     {
-      return u1;
+      return state.u1;
     }
 
     const Vector<double> &
     u_hub() const
     {
-      return u2;
+      return state.u2;
     }
     /** @} */
 
@@ -152,14 +163,14 @@ namespace coaxfit
     double
     displacement_residual() const
     {
-      return last_displacement_mismatch;
+      return state.displacement_mismatch;
     }
 
     /** Latest relative traction mismatch. */
     double
     traction_residual() const
     {
-      return last_traction_mismatch;
+      return state.traction_mismatch;
     }
 
     /** The contact / separated flags of the interface points. */
@@ -170,11 +181,8 @@ namespace coaxfit
     }
 
   protected:
-    Vector<double>            force;  ///< nodal contact force (compression +)
-    Vector<double>            u1, u2; ///< u_r of shaft and hub on S
+    InterfaceState            state;
     std::vector<CouplingStep> history_rows;
-    double                    last_displacement_mismatch;
-    double                    last_traction_mismatch;
     bool                      has_converged = false;
     UnilateralActiveSet       active_set;
   };

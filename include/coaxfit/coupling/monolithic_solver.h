@@ -6,6 +6,7 @@
 
 #include <coaxfit/coupling/contact_interface.h>
 #include <coaxfit/coupling/interface_solver.h>
+#include <coaxfit/coupling/scene.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/solvers/sparse_cholesky.h>
 
@@ -32,8 +33,12 @@ namespace coaxfit
   class MonolithicSolver : public InterfaceSolver
   {
   public:
-    MonolithicSolver(const BodyDiscretization  &shaft,
-                     const BodyDiscretization  &hub,
+    /**
+     * The solver of the joint of @p scene (set up and assembled) on its
+     * interface @p interface, with the flags @p active_set and at most
+     * @p max_steps active set steps.
+     */
+    MonolithicSolver(const Scene               &scene,
                      const ContactInterface    &interface,
                      const UnilateralActiveSet &active_set,
                      unsigned int               max_steps);

@@ -45,6 +45,13 @@ namespace coaxfit
     static std::string
     key_of(const std::string &name);
 
+    /**
+     * The body's field under the loads @p load alone (joint surface free),
+     * by its solver (after set-up).
+     */
+    Vector<double>
+    answer_to(const BodyLoad &load) const;
+
     std::unique_ptr<BodyDiscretization> discretization;
     std::unique_ptr<BodySolver>         solver;     ///< after set-up
     std::unique_ptr<CondensedBody>      condensed;  ///< once condensed
@@ -95,6 +102,14 @@ namespace coaxfit
      */
     void
     set_loads(const Parameters &parameters);
+
+    /**
+     * The scene's joint where the code of this version expects exactly
+     * one (two bodies); throws std::logic_error otherwise, so that a scene
+     * of several joints cannot be taken for one.
+     */
+    const JointSides &
+    joint() const;
 
     /** The body on the inside of @p joint. */
     const Body &

@@ -200,6 +200,15 @@ main()
     << std::string(100000, '[') << std::string(100000, ']');
   run("json_nested_too_deep", "deep.json");
   {
+    // The template of --print-parameters is not a scene: a copy refuses to
+    // run until its required entries are given, and names them.
+    const coaxfit_test::RunResult t
+      = coaxfit_test::run_command(std::string(coaxfit_test::coaxfit_executable)
+                                  + " --print-parameters > template.prm");
+    std::cout << "print_parameters_template: exit code " << t.exit_code << '\n';
+    run("template_unfilled", "template.prm");
+  }
+  {
     // Standard output on a full device: exit 3 and one line.
     const coaxfit_test::RunResult r
       = coaxfit_test::run_command(std::string(coaxfit_test::coaxfit_executable)

@@ -38,7 +38,11 @@ namespace coaxfit
             "pressure_din_MPa",
             "torque_capacity_Nm",
             "torque_capacity_din_Nm",
-            "safety_slip"};
+            "safety_slip",
+            "safety_yield_hub",
+            "safety_yield_shaft",
+            "safety_yield_hub_assembly",
+            "safety_yield_shaft_assembly"};
   }
 
 
@@ -107,7 +111,11 @@ namespace coaxfit
                                 value("pressure_din_MPa"),
                                 value("torque_capacity_Nm"),
                                 value("torque_capacity_din_Nm"),
-                                value("safety_slip")};
+                                value("safety_slip"),
+                                value("safety_yield_hub"),
+                                value("safety_yield_shaft"),
+                                value("safety_yield_hub_assembly"),
+                                value("safety_yield_shaft_assembly")};
             }
         return figures;
       }
@@ -129,7 +137,11 @@ namespace coaxfit
                           d.pressure_din,
                           d.torque_capacity,
                           d.torque_capacity_din,
-                          d.safety_slip};
+                          d.safety_slip,
+                          d.safety_yield_hub,
+                          d.safety_yield_shaft,
+                          d.safety_yield_hub_assembly,
+                          d.safety_yield_shaft_assembly};
     return figures;
   }
 

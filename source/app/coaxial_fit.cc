@@ -527,6 +527,9 @@ namespace coaxfit
     // The parts are pressed together at assembly, not in service.
     design->press_in_force     = operation->assembly.press_in_force;
     design->press_in_force_din = operation->assembly.press_in_force_din;
+    design->safety_yield_shaft_assembly
+      = operation->assembly.safety_yield_shaft;
+    design->safety_yield_hub_assembly = operation->assembly.safety_yield_hub;
     std::vector<std::string> warning_list = parameters.input_warnings();
     for (const auto &list : {warnings(pressure),
                              design->warnings(parameters),

@@ -75,6 +75,8 @@ namespace coaxfit
             "safety_yield_hub_din",
             "safety_yield_shaft",
             "safety_yield_shaft_din",
+            "safety_yield_hub_assembly",
+            "safety_yield_shaft_assembly",
             "safety_fracture_hub",
             "safety_fracture_hub_din"};
   }
@@ -118,6 +120,8 @@ namespace coaxfit
                          d.safety_yield_hub_din,
                          d.safety_yield_shaft,
                          d.safety_yield_shaft_din,
+                         d.safety_yield_hub_assembly,
+                         d.safety_yield_shaft_assembly,
                          d.safety_fracture_hub,
                          d.safety_fracture_hub_din},
                         fit.get_verdict().failed});

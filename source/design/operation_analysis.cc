@@ -92,6 +92,17 @@ namespace coaxfit
       assembly = operation;
     assembly.name = "assembly";
 
+    const OperationParameters &o = parameters.operation;
+    std::ostringstream         c;
+    c << "assembly at " << o.assembly_temperature
+      << " C, at rest, no pressures; in service the hub at "
+      << o.hub_temperature() << " C, the shaft at " << o.shaft_temperature()
+      << " C, speed " << o.speed << " 1/min, pressure " << o.hub_outer_pressure
+      << " MPa on the hub's outer surface";
+    if (parameters.geometry.R0 > 0.)
+      c << " and " << o.shaft_bore_pressure << " MPa in the shaft's bore";
+    conditions = c.str();
+
     compute_loosening_speed(parameters, fit);
     compute_joining(parameters);
 
@@ -382,6 +393,7 @@ namespace coaxfit
         out << s.str();
         return;
       }
+    s << "  operating conditions: " << conditions << '\n';
     s << "  operation:" << std::setw(50) << "assembly" << std::setw(12)
       << "in service" << '\n';
     row("joint pressure at z = 0 (MPa)",
@@ -424,9 +436,10 @@ namespace coaxfit
             f << std::fixed << std::setprecision(0) << n;
           return f.str();
         };
-        s << "    loosening speed (1/min): first point "
-          << rpm(loosening_speed_first) << ", whole joint "
-          << rpm(loosening_speed_whole) << ", DIN 7190 (plane stress) "
+        s << "    loosening speed (1/min): the joint starts to open at "
+          << rpm(loosening_speed_first) << " and is open over its whole "
+          << "length at " << rpm(loosening_speed_whole)
+          << "; DIN 7190 (plane stress, no pressure left): "
           << rpm(loosening_speed_din) << '\n';
         s << "    (confirmed by solves: at the first speed min pressure "
           << figure(min_pressure_at_first) << " MPa, separated points 1 % "

@@ -81,8 +81,27 @@ namespace coaxfit
       gp << "\n\nset output 'convergence.png'\n"
          << "unset object 1\n"
          << "set title 'Coupling: relative mismatches per step'\n"
-         << "set xlabel 'step'\nset ylabel 'relative mismatch'\n"
-         << "set logscale y\nset yrange [*:*]\nset key top right\n"
+         << "set xlabel 'step'\nset ylabel 'relative mismatch'\n";
+      // Mismatches that are all exactly zero (no contact anywhere, nothing
+      // to iterate) have no logarithm: drawn on a linear axis.
+      bool positive = false;
+      for (const CouplingStep &step : results.solver.history())
+        positive = positive
+                   || (step.neumann ? step.displacement_mismatch :
+                                      step.traction_mismatch)
+                        > 0.;
+      if (!positive)
+        {
+          gp << "set yrange [-0.1:1]\nset key top right\n"
+             << "plot 'convergence.csv' skip 1 using 1:(strcol(2) eq "
+                "'neumann' ? $4 : 1/0) with linespoints pt 7 title "
+                "'displacement mismatch (exactly 0 in every step)', \\\n"
+             << "     'convergence.csv' skip 1 using 1:(strcol(2) eq "
+                "'dirichlet' ? $5 : 1/0) with linespoints pt 5 title "
+                "'traction mismatch (exactly 0 in every step)'\n";
+          return gp.str();
+        }
+      gp << "set logscale y\nset yrange [*:*]\nset key top right\n"
          << "plot 'convergence.csv' skip 1 using 1:(strcol(2) eq 'neumann' "
             "&& $4 > 0 ? $4 : 1/0) with linespoints pt 7 title 'displacement "
             "|u2 - u1 - d|/d (after Neumann steps)', \\\n"

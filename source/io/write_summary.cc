@@ -193,6 +193,8 @@ namespace coaxfit
               {"safety_yield_shaft_din", d.safety_yield_shaft_din},
               {"safety_yield_hub", d.safety_yield_hub},
               {"safety_yield_hub_din", d.safety_yield_hub_din},
+              {"safety_yield_shaft_assembly", d.safety_yield_shaft_assembly},
+              {"safety_yield_hub_assembly", d.safety_yield_hub_assembly},
               {"edge_distance", d.edge_distance},
               {"check_points_mid_plane", checks},
               {"surface_maxima", maxima},

@@ -9,10 +9,44 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace coaxfit
 {
+
+  namespace
+  {
+    /**
+     * The entries of @p prm declared as required (has_to_be_set) that no
+     * file or override set, with their paths as deal.II joins them
+     * (`Geometry.Hub length`): deal.II writes characters other than
+     * letters and digits as _XX (hexadecimal), turned back here.
+     */
+    std::set<std::string>
+    entries_not_set(const ParameterHandler &prm)
+    {
+      std::set<std::string> entries;
+      for (const std::string &mangled : prm.get_entries_wrongly_not_set())
+        {
+          std::string entry;
+          for (std::size_t i = 0; i < mangled.size(); ++i)
+            if (mangled[i] == '_' && i + 2 < mangled.size()
+                && std::isxdigit(static_cast<unsigned char>(mangled[i + 1]))
+                && std::isxdigit(static_cast<unsigned char>(mangled[i + 2])))
+              {
+                entry += static_cast<char>(
+                  std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
+                i += 2;
+              }
+            else
+              entry += mangled[i];
+          entries.insert(entry);
+        }
+      return entries;
+    }
+  } // namespace
+
   namespace
   {
     template <typename Enum>
@@ -1226,23 +1260,7 @@ namespace coaxfit
     // The scene has no silent defaults: name every entry that is missing.
     // deal.II joins the path with '.' and writes other characters than
     // letters and digits as _XX (hexadecimal): back to the names of the file.
-    std::set<std::string> missing;
-    for (const std::string &mangled : prm.get_entries_wrongly_not_set())
-      {
-        std::string entry;
-        for (std::size_t i = 0; i < mangled.size(); ++i)
-          if (mangled[i] == '_' && i + 2 < mangled.size()
-              && std::isxdigit(static_cast<unsigned char>(mangled[i + 1]))
-              && std::isxdigit(static_cast<unsigned char>(mangled[i + 2])))
-            {
-              entry += static_cast<char>(
-                std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
-              i += 2;
-            }
-          else
-            entry += mangled[i];
-        missing.insert(entry);
-      }
+    std::set<std::string> missing = entries_not_set(prm);
     complete_scene(parameters, missing);
     if (!missing.empty())
       {
@@ -1317,6 +1335,43 @@ namespace coaxfit
     Parameters       parameters;
     ParameterHandler prm;
     parameters.declare_parameters(prm);
-    prm.print_parameters(out, ParameterHandler::Text);
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::Text);
+    // A template, not a scene: the entries of the scene that a file must
+    // give are written commented out, so that a copy refuses to run (and
+    // names them) until they are filled in; the values shown are examples.
+    const std::set<std::string> required = entries_not_set(prm);
+    std::istringstream          lines(text.str());
+    std::vector<std::string>    path;
+    std::string                 line;
+    out << "# coaxfit parameter template. Entries marked 'required' are "
+           "commented out:\n# give each its value (the one shown is an "
+           "example) and remove the '#'.\n";
+    while (std::getline(lines, line))
+      {
+        const std::size_t first = line.find_first_not_of(' ');
+        const std::string body
+          = first == std::string::npos ? "" : line.substr(first);
+        if (body.rfind("subsection ", 0) == 0)
+          path.push_back(body.substr(11));
+        else if (body == "end" && !path.empty())
+          path.pop_back();
+        else if (body.rfind("set ", 0) == 0)
+          {
+            std::string name = body.substr(4, body.find('=') - 4);
+            name.erase(name.find_last_not_of(' ') + 1);
+            std::string full;
+            for (const std::string &s : path)
+              full += s + '.';
+            if (required.count(full + name) > 0)
+              {
+                out << line.substr(0, first) << "# " << body
+                    << "   # required\n";
+                continue;
+              }
+          }
+        out << line << '\n';
+      }
+    out.flush();
   }
 } // namespace coaxfit

@@ -70,6 +70,13 @@ namespace coaxfit
     double safety_slip, safety_slip_din;
     double safety_yield_shaft, safety_yield_shaft_din;
     double safety_yield_hub, safety_yield_hub_din;
+    /**
+     * The FE safeties against yield at assembly (room temperature, at
+     * rest, no pressures): those above with no loads of operation, else
+     * set by the operation analysis.
+     */
+    double safety_yield_shaft_assembly = unknown;
+    double safety_yield_hub_assembly   = unknown;
     double edge_distance; ///< mm, in use
 
     /**

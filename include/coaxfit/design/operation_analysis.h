@@ -86,6 +86,11 @@ namespace coaxfit
     double max_pressure_at_whole = unknown;
     /** Why no loosening speed was computed; empty if it was. */
     std::string loosening_note;
+    /**
+     * The operating conditions in words: the assembly state's temperature
+     * and the service state's temperatures, speed and pressures.
+     */
+    std::string conditions;
     /** @} */
 
     /** @name Joining (DIN 7190) */

@@ -3,6 +3,7 @@
 #include <coaxfit/app/case_batch.h>
 #include <coaxfit/app/coaxial_fit.h>
 #include <coaxfit/app/fit_case_study.h>
+#include <coaxfit/app/fit_selection_study.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/base/input_error.h>
@@ -83,6 +84,20 @@ namespace coaxfit
            CoaxialFit        *prepared)
   {
     CaseFigures figures;
+    if (parameters.design.mode == DesignMode::select)
+      {
+        if (!directory.empty())
+          throw InputError("Design/Mode = select cannot be a case of a "
+                           "study; give Design/Mode = check");
+        FitSelectionStudy study(parameters, out, verbose);
+        figures.converged = study.run();
+        figures.steps     = study.mean_case_steps();
+        figures.values    = study.mean_case_values();
+        if (figures.values.empty())
+          figures.values.assign(CaseFigures::column_names().size(),
+                                std::nan(""));
+        return figures;
+      }
     if (parameters.fit.fit_case == FitCase::all)
       {
         if (!directory.empty())

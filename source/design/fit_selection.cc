@@ -210,6 +210,8 @@ namespace coaxfit
 
   FitSelection::FitSelection(const Parameters &parameters, const Solve &solve)
     : diameter(parameters.drawing.joint_diameter)
+    , design(parameters.design)
+    , brittle_hub(parameters.hub.kind == MaterialKind::brittle)
   {
     compute_din(parameters);
     compute_fe(parameters, solve);
@@ -498,25 +500,32 @@ namespace coaxfit
               check.separated_length += stop - start;
             check.contact_lost = !(state.pressure.max > 0.);
             checks.push_back(check);
-            // The contact zone against the straight line's solves.
-            double line_open = 0.;
+            // The contact zone against the straight line's solves: the
+            // same zones, the line holds; other zones, it is approximate
+            // there (the governing end was corrected by solves at it).
+            const auto &zones = state.separated_zones;
+            bool        same  = true;
             for (const double U : {U_a, U_b})
-              for (const auto &[start, stop] : state_at(s, U).separated_zones)
-                line_open = std::max(line_open, stop - start);
+              same = same && state_at(s, U).separated_zones == zones;
             std::ostringstream note;
             note << std::setprecision(4);
             if (check.contact_lost)
               note << "at " << end_name << " " << check.state
-                   << " the contact is lost: the straight line does not "
-                      "hold there; the end was found by the secant and "
-                      "bisection steps";
-            else if (check.separated_length > 0. || line_open > 0.)
+                   << " the contact is lost: the straight line does not hold "
+                      "there; the end comes from the secant and bisection "
+                      "steps";
+            else if (!same)
+              note << "at " << end_name << " " << check.state
+                   << " the contact zone differs from the line's solves (open "
+                   << check.separated_length
+                   << " mm of the half joint): the straight line is "
+                      "approximate there, the governing end was corrected by "
+                      "solves at it";
+            else if (check.separated_length > 0.)
               note << "at " << end_name << " " << check.state
                    << " the joint is open over " << check.separated_length
-                   << " mm of the half joint (" << line_open
-                   << " mm at the line's solves): the contact zone moves "
-                      "with the interference, the end was corrected by "
-                      "solves at it";
+                   << " mm of the half joint, the same zone as at the line's "
+                      "solves";
             if (!note.str().empty())
               notes.push_back(note.str());
             if (!check.converged)
@@ -560,6 +569,26 @@ namespace coaxfit
 
 
 
+  namespace
+  {
+    /** What the selection asks: the loads, K_A and the safeties. */
+    std::string
+    requirement(const DesignParameters &design, const bool brittle)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << "required torque " << design.required_torque
+        << " N m and axial force " << design.required_axial_force
+        << " N times K_A " << design.application_factor << ", mu "
+        << design.friction_coefficient << ", slip safety " << design.slip_safety
+        << ", yield safety " << design.yield_safety;
+      if (brittle)
+        s << ", fracture safety " << design.fracture_safety;
+      return s.str();
+    }
+  } // namespace
+
+
+
   std::string
   FitSelection::conflict() const
   {
@@ -594,6 +623,7 @@ namespace coaxfit
     std::ostringstream s;
     s << "  fit selection (measured diametral interference, smoothing loss "
          "included):\n"
+      << "    " << requirement(design, brittle_hub) << '\n'
       << "    " << std::left << std::setw(22) << "" << std::right
       << std::setw(12) << "FE" << std::setw(12) << "DIN 7190"
       << "  governed by (FE; DIN 7190)\n";
@@ -648,7 +678,8 @@ namespace coaxfit
   {
     out << "## Fit selection\n\n"
         << "Measured (drawing) diametral interference, smoothing loss "
-           "included.\n\n"
+           "included; "
+        << requirement(design, brittle_hub) << ".\n\n"
         << "| | FE | DIN 7190 | governed by (FE) | governed by (DIN 7190) "
            "|\n|---|---:|---:|---|---|\n";
     for (const auto &[label, fe, din] :

@@ -90,11 +90,13 @@ namespace coaxfit
 
     End                      least, largest;         ///< FE: U_min, U_max
     End                      least_din, largest_din; ///< DIN 7190
-    std::vector<IsoFit>      fits;          ///< ranked, inside the band
-    std::vector<Check>       checks;        ///< each end, each state
-    std::vector<std::string> notes;         ///< contact zone, corrections
-    unsigned int             n_solves = 0;  ///< FE solves in all
-    double                   diameter = 0.; ///< D_F (mm)
+    std::vector<IsoFit>      fits;                ///< ranked, inside the band
+    std::vector<Check>       checks;              ///< each end, each state
+    std::vector<std::string> notes;               ///< contact zone, corrections
+    unsigned int             n_solves = 0;        ///< FE solves in all
+    double                   diameter = 0.;       ///< D_F (mm)
+    DesignParameters         design;              ///< the loads and safeties
+    bool                     brittle_hub = false; ///< fracture, not yield
 
     /** Whether some fit satisfies the design. */
     bool

@@ -133,11 +133,11 @@ namespace coaxfit
     fill_material(p.shaft, "Shaft", missing);
     fill_material(p.hub, "Hub", missing);
     // A selection chooses the interference itself.
-    if (p.design.mode == DesignMode::select)
-      missing.erase("Fit.Diametral interference");
     const bool interference_given
       = missing.count("Fit.Diametral interference") == 0;
-    if (!p.fit.iso_fit.empty())
+    if (p.design.mode == DesignMode::select)
+      missing.erase("Fit.Diametral interference");
+    else if (!p.fit.iso_fit.empty())
       {
         missing.erase("Fit.Diametral interference");
         if (interference_given)
@@ -149,7 +149,16 @@ namespace coaxfit
     if (!missing.empty())
       return; // read_parameters() names what is missing
     p.drawing.validate();
-    p.fit_limits = fit_limits_of(p.fit, p.drawing.joint_diameter);
+    // A selection chooses the fit: Fit/ISO fit and Fit/Case are not used
+    // (the interference given only starts its solves when DIN 7190's ends
+    // cannot).
+    FitParameters fit = p.fit;
+    if (p.design.mode == DesignMode::select)
+      {
+        fit.iso_fit.clear();
+        fit.fit_case = FitCase::mean;
+      }
+    p.fit_limits = fit_limits_of(fit, p.drawing.joint_diameter);
     if (p.design.mode == DesignMode::check)
       check_effective_interference(p);
     p.derive_model();

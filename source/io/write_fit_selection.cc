@@ -26,12 +26,13 @@ namespace coaxfit
         return {{"state", end.state}, {"criterion", end.criterion}};
       }
 
-      /** A safety; null for NaN, a string for an unloaded part. */
+      /**
+       * A safety; null where it is not finite (not known, or an unloaded
+       * part), as summary.json of a run writes it.
+       */
       Json
       safety(const double x)
       {
-        if (std::isinf(x))
-          return "infinite";
         return std::isfinite(x) ? Json(x) : Json(nullptr);
       }
     } // namespace

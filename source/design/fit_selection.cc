@@ -463,7 +463,7 @@ namespace coaxfit
               const double safety = safety_of(state_at(estimates[i].state, U),
                                               estimates[i].criterion);
               const double S = required_safety(design, estimates[i].criterion);
-              if (safety < S * (1. - 1e-3))
+              if (safety < S)
                 {
                   // It fails at the end found: its own end is further in.
                   estimates[i].U = slip ? std::max(estimates[i].U, U) :
@@ -528,6 +528,16 @@ namespace coaxfit
                       "solves";
             if (!note.str().empty())
               notes.push_back(note.str());
+            // Whatever the steps left: a criterion below its safety at
+            // its end is said.
+            for (const Criterion c : criteria_of(parameters))
+              if ((c == Criterion::slip) == (end_name == "U_min")
+                  && safety_of(state, c) < required_safety(design, c))
+                notes.push_back("at " + end_name + " " + check.state
+                                + " the safety against " + name_of(c) + " "
+                                + safety_text(safety_of(state, c))
+                                + " is below the required "
+                                + safety_text(required_safety(design, c)));
             if (!check.converged)
               notes.push_back("the solve at " + end_name + " " + check.state
                               + " did not converge");

@@ -86,13 +86,15 @@ namespace coaxfit
     CaseFigures figures;
     if (parameters.design.mode == DesignMode::select)
       {
+        // A case of a sweep: into the sweep's directory; a prepared case
+        // is not used (the selection sets up its own).
         if (!directory.empty())
-          throw InputError("Design/Mode = select cannot be a case of a "
-                           "study; give Design/Mode = check");
+          check_memory(parameters);
         FitSelectionStudy study(parameters, out, verbose);
-        figures.converged = study.run();
-        figures.steps     = study.mean_case_steps();
-        figures.values    = study.mean_case_values();
+        figures.converged
+          = directory.empty() ? study.run() : study.run_in(directory);
+        figures.steps  = study.mean_case_steps();
+        figures.values = study.mean_case_values();
         if (figures.values.empty())
           figures.values.assign(CaseFigures::column_names().size(),
                                 std::nan(""));

@@ -49,9 +49,24 @@ namespace coaxfit
   FitSelectionStudy::run()
   {
     check_memory(parameters);
-    ResultDirectory   directory(parameters.output_directory(),
+    ResultDirectory directory(parameters.output_directory(),
                               all_result_file_names());
-    const std::string staging = directory.staging_path();
+    const bool      converged = run_in(directory.staging_path());
+    directory.commit(out);
+    if (verbose)
+      out << "  results in " << parameters.output_directory()
+          << (mean_values.empty() ?
+                "" :
+                " (the first fit's cases in min, mean, max)")
+          << '\n';
+    return converged;
+  }
+
+
+
+  bool
+  FitSelectionStudy::run_in(const std::string &staging)
+  {
     if (verbose)
       out << "coaxfit: case " << parameters.case_name
           << ": fit selection (Design/Mode = select)\n";
@@ -140,12 +155,6 @@ namespace coaxfit
     if (verbose)
       for (const std::string &line : lines)
         out << "  " << line << '\n';
-    directory.commit(out);
-    if (verbose)
-      out << "  results in " << parameters.output_directory()
-          << (selection.found() ? " (the first fit's cases in min, mean, max)" :
-                                  "")
-          << '\n';
     return converged;
   }
 } // namespace coaxfit

@@ -37,6 +37,14 @@ namespace coaxfit
     run();
 
     /**
+     * Select and check into the existing directory @p directory (no
+     * staging, no commit): what run() does between its checks and its
+     * commit, for a caller that stages several cases together (a sweep).
+     */
+    bool
+    run_in(const std::string &directory);
+
+    /**
      * The figures of the first fit's mean case in the order of
      * CaseFigures::column_names() (after run(); empty if no fit).
      */

@@ -192,7 +192,9 @@ namespace coaxfit
 
     /**
      * The grades ISO 286-2 tabulates for the class letter @p letter (shaft
-     * lower case, hole upper case), within 5 to 11.
+     * lower case, hole upper case), within 5 to 11: the candidates of a
+     * selection stay among them (ISO 286-1's formulas would give any
+     * grade). Typed from the tables' headings as commonly reproduced.
      */
     std::pair<unsigned int, unsigned int>
     tabulated_grades(const std::string &letter)
@@ -348,11 +350,15 @@ namespace coaxfit
   bool
   is_preferred_fit(const std::string &name)
   {
-    // The interference and transition fits among the preferred fits of
-    // ISO 286-1:2010 (the hole-basis and shaft-basis figures of preferred
-    // fits): transition H7/k6, H7/n6, interference H7/p6, H7/r6, H7/s6,
-    // H7/u6, and their shaft-basis counterparts. The same pairs, without
-    // r6/R7, are the preferred fits of ANSI B4.2-1978.
+    // The interference and transition fits among the preferred fits:
+    // transition H7/k6, H7/n6, interference H7/p6, H7/s6, H7/u6 and their
+    // shaft-basis counterparts K7/h6, N7/h6, P7/h6, S7/h6, U7/h6 are the
+    // preferred fits of the table of ISO 286-1 and ANSI B4.2-1978 as it is
+    // commonly reproduced (e.g. in engineering handbooks' tables of
+    // preferred metric fits); H7/r6 and R7/h6 are added from ISO 286-1:
+    // 2010's figures of the hole-basis and shaft-basis systems, in which
+    // r6 and R7 stand among the preferred classes. The standard's own text
+    // was not at hand to check the last pair against.
     static const std::set<std::string> preferred{"H7/k6",
                                                  "H7/n6",
                                                  "H7/p6",

@@ -69,9 +69,9 @@ namespace coaxfit
 
   /**
    * Whether @p name (normalized) is one of the preferred interference and
-   * transition fits of ISO 286-1:2010 (its figures of the preferred fits
-   * of the hole-basis and the shaft-basis system): H7/k6, H7/n6, H7/p6,
-   * H7/r6, H7/s6, H7/u6 and K7/h6, N7/h6, P7/h6, R7/h6, S7/h6, U7/h6.
+   * transition fits of ISO 286-1 (hole basis and shaft basis): H7/k6,
+   * H7/n6, H7/p6, H7/r6, H7/s6, H7/u6 and K7/h6, N7/h6, P7/h6, R7/h6,
+   * S7/h6, U7/h6 (sources in iso286.cc).
    */
   bool
   is_preferred_fit(const std::string &name);

@@ -155,10 +155,11 @@ main()
       "--set Output/Directory=" + std::string(300, 'x') + " "
         + file_with("directory_name_too_long", ""));
   // The fit and the materials in the engineer's terms.
-  run("iso_fit_transition",
-      fit("iso_fit_transition", "  set ISO fit = H7/k6\n"));
+  // A clearance fit, and a shaft basis hole with a shaft that is not h
+  // (H7/k6 and S7/h6 are covered since the fit selection).
+  run("iso_fit_clearance", fit("iso_fit_clearance", "  set ISO fit = H7/g6\n"));
   run("iso_fit_shaft_basis",
-      fit("iso_fit_shaft_basis", "  set ISO fit = S7/h6\n"));
+      fit("iso_fit_shaft_basis", "  set ISO fit = S7/g6\n"));
   run("iso_fit_grade", fit("iso_fit_grade", "  set ISO fit = H7/s12\n"));
   run("iso_fit_t_below_24",
       "--set \"Geometry/Joint diameter=20\" --set \"Geometry/Hub outer "
@@ -188,6 +189,16 @@ main()
   run("slip_safety_below_one",
       file_with("slip_safety_below_one",
                 "subsection Design\n  set Slip safety = 0.9\nend\n"));
+  // The fit selection: K_A below 1 or negative, nothing to carry.
+  run("application_factor_below_one",
+      file_with("application_factor_below_one",
+                "subsection Design\n  set Application factor = 0.8\nend\n"));
+  run("application_factor_negative",
+      file_with("application_factor_negative",
+                "subsection Design\n  set Application factor = -1.25\nend\n"));
+  run("select_without_load",
+      file_with("select_without_load",
+                "subsection Design\n  set Mode = select\nend\n"));
   run("case_without_iso_fit",
       fit("case_without_iso_fit", "  set Case = max\n"));
   run("material_unknown",

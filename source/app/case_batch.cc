@@ -3,6 +3,7 @@
 #include <coaxfit/app/case_batch.h>
 #include <coaxfit/app/coaxial_fit.h>
 #include <coaxfit/app/fit_case_study.h>
+#include <coaxfit/app/fit_selection_study.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/base/input_error.h>
@@ -87,6 +88,22 @@ namespace coaxfit
            CoaxialFit        *prepared)
   {
     CaseFigures figures;
+    if (parameters.design.mode == DesignMode::select)
+      {
+        // A case of a sweep: into the sweep's directory; a prepared case
+        // is not used (the selection sets up its own).
+        if (!directory.empty())
+          check_memory(parameters);
+        FitSelectionStudy study(parameters, out, verbose);
+        figures.converged
+          = directory.empty() ? study.run() : study.run_in(directory);
+        figures.steps  = study.mean_case_steps();
+        figures.values = study.mean_case_values();
+        if (figures.values.empty())
+          figures.values.assign(CaseFigures::column_names().size(),
+                                std::nan(""));
+        return figures;
+      }
     if (parameters.fit.fit_case == FitCase::all)
       {
         if (!directory.empty())

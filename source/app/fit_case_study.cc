@@ -3,6 +3,7 @@
 #include <coaxfit/app/resources.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/io/result_writers.h>
+#include <coaxfit/io/selection_writers.h>
 
 #include <cmath>
 #include <filesystem>
@@ -89,12 +90,25 @@ namespace coaxfit
     check_memory(parameters);
     ResultDirectory directory(parameters.output_directory(),
                               all_result_file_names());
-    bool            all_converged = true;
+    const bool      all_converged = run_in(directory.staging_path());
+    directory.commit(out);
+    if (verbose)
+      out << "  results in " << parameters.output_directory()
+          << " (subdirectories min, mean, max)\n";
+    return all_converged;
+  }
+
+
+
+  bool
+  FitCaseStudy::run_in(const std::string &directory)
+  {
+    bool all_converged = true;
     rows.clear();
     for (const FitCase c : {FitCase::min, FitCase::mean, FitCase::max})
       {
         const Parameters  p   = parameters.for_fit_case(c);
-        const std::string sub = directory.staging_path() + "/" + to_string(c);
+        const std::string sub = directory + "/" + to_string(c);
         std::filesystem::create_directory(sub);
         CoaxialFit            fit(p, out, verbose);
         const bool            converged = fit.run_in(sub);
@@ -127,11 +141,7 @@ namespace coaxfit
                         fit.get_verdict().failed});
         all_converged = all_converged && converged;
       }
-    output_results(directory.staging_path());
-    directory.commit(out);
-    if (verbose)
-      out << "  results in " << parameters.output_directory()
-          << " (subdirectories min, mean, max)\n";
+    output_results(directory);
     return all_converged;
   }
 
@@ -193,7 +203,8 @@ namespace coaxfit
     report << "# coaxfit report: fit " << parameters.fit_limits.iso_fit
            << " at D_F = " << 2. * parameters.geometry.R1
            << " mm, cases min, mean, max\n\n## Verdict\n\n"
-           << verdict_line() << "\n\n## The three cases\n\n| figure |";
+           << verdict_line() << "\n\n"
+           << report_section << "## The three cases\n\n| figure |";
     for (const Row &row : rows)
       report << ' ' << to_string(row.fit_case) << " |";
     report << "\n|---|";
@@ -250,6 +261,9 @@ namespace coaxfit
       names.insert(name);
     // A Fit/Case = all study may have written the directory before.
     for (const std::string &name : FitCaseStudy::file_names())
+      names.insert(name);
+    // And a Design/Mode = select run.
+    for (const std::string &name : selection_files::file_names())
       names.insert(name);
     return names;
   }

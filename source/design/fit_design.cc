@@ -63,10 +63,12 @@ namespace coaxfit
       = din.axial_force(pressure_din, design.press_in_friction_coefficient);
 
     // DIN 7190's resultant of a torque and an axial force on the joint:
-    // the circumferential force 2 M / D_F and the axial force combined.
+    // the circumferential force 2 M / D_F and the axial force combined,
+    // both times the application factor K_A.
     const double circumferential = 2e3 * design.required_torque / (2. * R_F);
     const double required
-      = std::hypot(circumferential, design.required_axial_force);
+      = design.application_factor
+        * std::hypot(circumferential, design.required_axial_force);
     safety_slip
       = required > 0. ? axial_force_capacity / required : FitDesign::unknown;
     safety_slip_din = required > 0. ? axial_force_capacity_din / required :

@@ -112,6 +112,16 @@ namespace coaxfit
 
 
 
+  Verdict
+  Verdict::no_fit(const std::string &conflict)
+  {
+    Verdict verdict;
+    verdict.failed.push_back("no fit: " + conflict);
+    return verdict;
+  }
+
+
+
   std::string
   Verdict::line() const
   {

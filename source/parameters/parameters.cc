@@ -988,6 +988,7 @@ namespace coaxfit
   Parameters::validate() const
   {
     geometry.validate();
+    design.validate();
     require(design.edge_distance < geometry.contact_length(),
             "Design/Edge distance",
             design.edge_distance,

@@ -59,36 +59,6 @@ namespace coaxfit
         }
     }
 
-    /** The limits of the interference: from the ISO fit or as given. */
-    FitLimits
-    fit_limits(const FitParameters &fit, const double joint_diameter)
-    {
-      FitLimits limits;
-      limits.smoothing_loss = fit.smoothing_loss();
-      limits.fit_case
-        = fit.fit_case == FitCase::all ? FitCase::mean : fit.fit_case;
-      if (fit.iso_fit.empty())
-        {
-          if (fit.fit_case != FitCase::mean)
-            throw InputError("parameter Fit/Case = " + to_string(fit.fit_case)
-                             + " needs Fit/ISO fit: with Fit/Diametral "
-                               "interference alone there is one "
-                               "interference (allowed: mean)");
-          limits.U_min = limits.U_max = fit.diametral_interference;
-          return limits;
-        }
-      const IsoFit iso   = iso_fit(fit.iso_fit, joint_diameter);
-      limits.source      = "Fit/ISO fit " + iso.name;
-      limits.iso_fit     = iso.name;
-      limits.hole_upper  = 1e-3 * iso.hole_upper;
-      limits.hole_lower  = 1e-3 * iso.hole_lower;
-      limits.shaft_upper = 1e-3 * iso.shaft_upper;
-      limits.shaft_lower = 1e-3 * iso.shaft_lower;
-      limits.U_min       = 1e-3 * iso.min_interference();
-      limits.U_max       = 1e-3 * iso.max_interference();
-      return limits;
-    }
-
     /**
      * Every case a run computes must stay in the linear (small strain)
      * range; a clearance (U_w <= 0) is a state like any other.
@@ -126,14 +96,48 @@ namespace coaxfit
 
 
 
+  FitLimits
+  fit_limits_of(const FitParameters &fit, const double joint_diameter)
+  {
+    FitLimits limits;
+    limits.smoothing_loss = fit.smoothing_loss();
+    limits.fit_case
+      = fit.fit_case == FitCase::all ? FitCase::mean : fit.fit_case;
+    if (fit.iso_fit.empty())
+      {
+        if (fit.fit_case != FitCase::mean)
+          throw InputError("parameter Fit/Case = " + to_string(fit.fit_case)
+                           + " needs Fit/ISO fit: with Fit/Diametral "
+                             "interference alone there is one "
+                             "interference (allowed: mean)");
+        limits.U_min = limits.U_max = fit.diametral_interference;
+        return limits;
+      }
+    const IsoFit iso   = iso_fit(fit.iso_fit, joint_diameter);
+    limits.source      = "Fit/ISO fit " + iso.name;
+    limits.iso_fit     = iso.name;
+    limits.hole_upper  = 1e-3 * iso.hole_upper;
+    limits.hole_lower  = 1e-3 * iso.hole_lower;
+    limits.shaft_upper = 1e-3 * iso.shaft_upper;
+    limits.shaft_lower = 1e-3 * iso.shaft_lower;
+    limits.U_min       = 1e-3 * iso.min_interference();
+    limits.U_max       = 1e-3 * iso.max_interference();
+    return limits;
+  }
+
+
+
   void
   complete_scene(Parameters &p, std::set<std::string> &missing)
   {
     fill_material(p.shaft, "Shaft", missing);
     fill_material(p.hub, "Hub", missing);
+    // A selection chooses the interference itself.
     const bool interference_given
       = missing.count("Fit.Diametral interference") == 0;
-    if (!p.fit.iso_fit.empty())
+    if (p.design.mode == DesignMode::select)
+      missing.erase("Fit.Diametral interference");
+    else if (!p.fit.iso_fit.empty())
       {
         missing.erase("Fit.Diametral interference");
         if (interference_given)
@@ -145,8 +149,18 @@ namespace coaxfit
     if (!missing.empty())
       return; // read_parameters() names what is missing
     p.drawing.validate();
-    p.fit_limits = fit_limits(p.fit, p.drawing.joint_diameter);
-    check_effective_interference(p);
+    // A selection chooses the fit: Fit/ISO fit and Fit/Case are not used
+    // (the interference given only starts its solves when DIN 7190's ends
+    // cannot).
+    FitParameters fit = p.fit;
+    if (p.design.mode == DesignMode::select)
+      {
+        fit.iso_fit.clear();
+        fit.fit_case = FitCase::mean;
+      }
+    p.fit_limits = fit_limits_of(fit, p.drawing.joint_diameter);
+    if (p.design.mode == DesignMode::check)
+      check_effective_interference(p);
     p.derive_model();
   }
 } // namespace coaxfit

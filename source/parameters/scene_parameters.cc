@@ -190,6 +190,33 @@ namespace coaxfit
   DesignParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Design");
+    prm.declare_entry("Mode",
+                      "check",
+                      Patterns::Selection("check|select"),
+                      "check: compute the fit of the Fit section (its ISO "
+                      "fit or interference). select: choose the fit; from "
+                      "Required torque and Required axial force (times "
+                      "Application factor), Slip safety, Yield safety and "
+                      "Fracture safety, the finite element model of this "
+                      "geometry gives the least and the largest measured "
+                      "diametral interference (smoothing loss included) "
+                      "at assembly and in service, DIN 7190's beside them, "
+                      "and the ISO 286 fits inside that band, ranked; the "
+                      "first is then computed as with Fit/Case = all. "
+                      "select needs Required torque or Required axial "
+                      "force > 0; Fit/ISO fit and Fit/Case are not used.");
+    prm.add_action("Mode", [this](const std::string &value) {
+      mode = value == "select" ? DesignMode::select : DesignMode::check;
+    });
+    prm.add_parameter("Application factor",
+                      application_factor,
+                      "Application (service) factor K_A of the loads: the "
+                      "joint must carry K_A times Required torque and "
+                      "Required axial force (the safety against slip is "
+                      "taken against those). 1: the loads as given; "
+                      "shocks ask more (DIN 3990: 1.25 to 2.25). "
+                      "Dimensionless. Allowed: 1 to 10.",
+                      Patterns::Double(1., 10.));
     prm.add_parameter("Friction coefficient",
                       friction_coefficient,
                       "Coefficient of static friction of the joint against "
@@ -259,5 +286,17 @@ namespace coaxfit
                       "singular corner) grow with refinement. Reported "
                       "next to the corner values, never a design figure.");
     prm.leave_subsection();
+  }
+
+
+
+  void
+  DesignParameters::validate() const
+  {
+    if (mode == DesignMode::select && !(required_torque > 0.)
+        && !(required_axial_force > 0.))
+      throw InputError("parameter Design/Mode = select needs a load to "
+                       "carry: allowed is Design/Required torque > 0 or "
+                       "Design/Required axial force > 0 (both are 0)");
   }
 } // namespace coaxfit

@@ -32,6 +32,29 @@ namespace coaxfit
     bool
     run();
 
+    /**
+     * Run the three cases into the existing directory @p directory (no
+     * staging, no commit): what run() does between its checks and its
+     * commit, for a caller that stages the directory (Design/Mode =
+     * select).
+     */
+    bool
+    run_in(const std::string &directory);
+
+    /**
+     * A section (Markdown, with its heading) that report.md gives after
+     * the verdict (the fit selection that chose the fit).
+     */
+    void
+    set_report_section(const std::string &markdown)
+    {
+      report_section = markdown;
+    }
+
+    /** The verdict of the three cases (after run()). */
+    std::string
+    verdict_line() const;
+
     /** The names of the entries a study writes into its directory. */
     static std::vector<std::string>
     file_names();
@@ -59,13 +82,6 @@ namespace coaxfit
 
   private:
     /**
-     * The verdict of the three cases: OK if each case is, else every
-     * failed criterion, prefixed by its case.
-     */
-    std::string
-    verdict_line() const;
-
-    /**
      * Write fit_cases.csv and report.md (the verdict and the table, with
      * links to each case's report) into @p directory and print the table
      * and the verdict.
@@ -77,6 +93,7 @@ namespace coaxfit
     std::ostream    &out;
     const bool       verbose;
     std::vector<Row> rows;
+    std::string      report_section;
   };
   /**
    * The name of every file any run may write (all writers, summary.json

@@ -27,6 +27,13 @@ namespace coaxfit
             const OperationAnalysis &operation,
             bool                     converged);
 
+    /**
+     * The verdict of a fit selection (Design/Mode = select) that found no
+     * fit: the conflict @p conflict (FitSelection::conflict()).
+     */
+    static Verdict
+    no_fit(const std::string &conflict);
+
     /** Whether every criterion holds. */
     bool
     ok() const
@@ -40,6 +47,9 @@ namespace coaxfit
 
     /** One line per failed criterion. */
     std::vector<std::string> failed;
+
+  private:
+    Verdict() = default;
   };
 } // namespace coaxfit
 

@@ -444,6 +444,14 @@ namespace coaxfit
   complete_scene(Parameters &p, std::set<std::string> &missing);
 
   /**
+   * The limits of the interference of @p fit at the joint diameter
+   * @p joint_diameter (mm): from its ISO fit, or its Diametral
+   * interference; InputError names the entry at fault.
+   */
+  FitLimits
+  fit_limits_of(const FitParameters &fit, double joint_diameter);
+
+  /**
    * @p text (a parameter file as ParameterHandler prints it) with the value
    * of every `set @p entry = ...` line replaced by @p value, or the line
    * removed if @p value is empty.

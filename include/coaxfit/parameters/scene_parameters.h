@@ -103,21 +103,41 @@ namespace coaxfit
     }
   };
 
+  /**
+   * What a run does with the design (`Design/Mode`): check the fit given
+   * in Fit, or select the ISO 286 fits that carry the required loads and
+   * that the parts bear.
+   */
+  enum class DesignMode
+  {
+    check,
+    select
+  };
+
   /** Subsection `Design`: what the joint must carry and how it slips. */
   struct DesignParameters
   {
-    double friction_coefficient          = 0.12;
-    double press_in_friction_coefficient = 0.08;
-    double required_torque               = 0.; ///< N m; 0: none
-    double required_axial_force          = 0.; ///< N; 0: none
-    double slip_safety     = 1.;   ///< required against slip (verdict)
-    double yield_safety    = 1.;   ///< required against yield (verdict)
-    double fracture_safety = 2.;   ///< required of a brittle hub (verdict)
-    double edge_distance   = 0.;   ///< mm; 0: 5 % of l_F
-    bool   corner_trend    = true; ///< solve once more, one level coarser
+    DesignMode mode                          = DesignMode::check;
+    double     application_factor            = 1.; ///< K_A, on the loads
+    double     friction_coefficient          = 0.12;
+    double     press_in_friction_coefficient = 0.08;
+    double     required_torque               = 0.; ///< N m; 0: none
+    double     required_axial_force          = 0.; ///< N; 0: none
+    double     slip_safety     = 1.;   ///< required against slip (verdict)
+    double     yield_safety    = 1.;   ///< required against yield (verdict)
+    double     fracture_safety = 2.;   ///< required of a brittle hub (verdict)
+    double     edge_distance   = 0.;   ///< mm; 0: 5 % of l_F
+    bool       corner_trend    = true; ///< solve once more, one level coarser
 
     void
     declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Relations between the entries (select mode needs a load to carry);
+     * InputError names the entry.
+     */
+    void
+    validate() const;
 
     /** The edge distance in use for a joint of length @p joint_length. */
     double

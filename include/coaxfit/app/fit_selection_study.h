@@ -1,0 +1,80 @@
+#ifndef coaxfit_fit_selection_study_h
+#define coaxfit_fit_selection_study_h
+
+#include <coaxfit/parameters/parameters.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * A run of `Design/Mode = select`: the FitSelection of the scene (its
+   * states solved by one CoaxialFit, set up once and reused for each
+   * interference and load), then the first fit checked as with
+   * `Fit/Case = all` (its cases min, mean, max in the subdirectories of the
+   * output directory). At the top of the output directory:
+   * fit_selection.csv, summary.json (the selection and the verdict),
+   * report.md (the verdict, the section "Fit selection", the cases' table)
+   * and parameters.prm (this run again). A design that no fit satisfies
+   * writes the selection and a verdict that names the conflict, and is no
+   * error. The output directory is staged and replaced as a whole.
+   */
+  class FitSelectionStudy
+  {
+  public:
+    FitSelectionStudy(const Parameters &parameters,
+                      std::ostream     &out     = std::cout,
+                      bool              verbose = true);
+
+    /**
+     * Select and check; true if every solve of the first fit's cases
+     * converged (also when no fit was found). Throws as CoaxialFit::run()
+     * does, with the earlier results untouched.
+     */
+    bool
+    run();
+
+    /**
+     * Select and check into the existing directory @p directory (no
+     * staging, no commit): what run() does between its checks and its
+     * commit, for a caller that stages several cases together (a sweep).
+     */
+    bool
+    run_in(const std::string &directory);
+
+    /**
+     * The figures of the first fit's mean case in the order of
+     * CaseFigures::column_names() (after run(); empty if no fit).
+     */
+    const std::vector<double> &
+    mean_case_values() const
+    {
+      return mean_values;
+    }
+
+    /** The coupling steps of the first fit's mean case (after run()). */
+    unsigned int
+    mean_case_steps() const
+    {
+      return mean_steps;
+    }
+
+    /**
+     * @p parameters checking the ISO fit @p fit as with Fit/Case = all
+     * (Design/Mode = check), its parameters.prm saying so.
+     */
+    static Parameters
+    checking(const Parameters &parameters, const std::string &fit);
+
+  private:
+    const Parameters    parameters;
+    std::ostream       &out;
+    const bool          verbose;
+    std::vector<double> mean_values;
+    unsigned int        mean_steps = 0;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,143 @@
+#ifndef coaxfit_fit_selection_h
+#define coaxfit_fit_selection_h
+
+#include <coaxfit/design/state_solver.h>
+#include <coaxfit/parameters/iso286.h>
+#include <coaxfit/parameters/parameters.h>
+
+#include <functional>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * `Design/Mode = select`: the band of measured (drawing) diametral
+   * interferences [U_min, U_max] (mm, smoothing loss included) that carries
+   * K_A times the required loads with Design/Slip safety in every state
+   * and that shaft and hub bear with Design/Yield safety (a brittle hub:
+   * Design/Fracture safety), and the ISO 286 fits whose whole band lies
+   * inside it, ranked.
+   *
+   * The states: assembly (room temperature, no speed, no pressures) and,
+   * with loads of operation, the state in service. While the contact zone
+   * stays the same each state is linear in the interference: the contact
+   * force and the stresses are a U + b (b = 0 at assembly, where the
+   * unilateral problem is even positively homogeneous in U_w). Each state
+   * is solved at two interferences (DIN 7190's U_min_din and U_max_din,
+   * or the run's interference and 1.5 times it), and each criterion
+   * (slip, yield of the shaft, yield of the hub, fracture of a brittle hub)
+   * gives its interference from that straight line: the safety against
+   * slip is linear in the normal force, the equivalent stress over the
+   * strength nearly so (the von Mises norm of affine stresses is not
+   * affine where b is not 0). The governing criterion of each end is then
+   * solved again at the interference found (aiming at the required safety
+   * plus 0.01 %); unless its safety is then the required one to 0.1 % and
+   * not below it (the contact zone changed, the joint opened, or the
+   * norm's curvature), secant steps on the last two solves correct it (at
+   * most six, bisection where a secant step leaves the bracket). Each end is
+   * finally solved in every state, which checks the other criteria and the
+   * contact zone there (notes say where the joint is open or the contact is
+   * lost).
+   *
+   * DIN 7190's values come from the same criteria on Lame's rings
+   * (Din7190, plane stress): the pressure is affine in U_w, so the slip end
+   * is exact; the yield end is the root of the equivalent stress at the
+   * check points, found by bisection of the closed form.
+   *
+   * Ranking of the fits: the preferred fits of ISO 286-1 first, then the
+   * widest tolerances (IT of hole plus IT of shaft, the interference band
+   * es - ei + ES - EI), then the band best centred in [U_min, U_max].
+   */
+  class FitSelection
+  {
+  public:
+    static constexpr double infinite = std::numeric_limits<double>::infinity();
+
+    /** Solves the state of a Parameters (same scene and meshes). */
+    using Solve = std::function<SolvedState(const Parameters &)>;
+
+    /** One end of the band: its interference and what governs it. */
+    struct End
+    {
+      double       U = 0.;     ///< measured diametral interference (mm)
+      std::string  state;      ///< "at assembly" or "in service"
+      std::string  criterion;  ///< "slip", "yield of the hub", ...
+      double       safety = 0; ///< the governing safety at U (FE)
+      unsigned int solves = 0; ///< FE solves of its correction
+    };
+
+    /** The figures of a state at one end (FE, solved at that end). */
+    struct Check
+    {
+      std::string end;   ///< "U_min" or "U_max"
+      std::string state; ///< "at assembly" or "in service"
+      double      U           = 0.;
+      double      safety_slip = 0., safety_yield_hub = 0.;
+      double      safety_yield_shaft = 0., safety_fracture_hub = 0.;
+      double      separated_length = 0.; ///< mm of the half joint
+      bool        contact_lost     = false;
+      bool        converged        = true;
+    };
+
+    /**
+     * Select for the run of @p parameters (Design/Mode = select); @p solve
+     * solves a state of the same scene at another interference or loads.
+     */
+    FitSelection(const Parameters &parameters, const Solve &solve);
+
+    End                      least, largest;         ///< FE: U_min, U_max
+    End                      least_din, largest_din; ///< DIN 7190
+    std::vector<IsoFit>      fits;                ///< ranked, inside the band
+    std::vector<Check>       checks;              ///< each end, each state
+    std::vector<std::string> notes;               ///< contact zone, corrections
+    unsigned int             n_solves = 0;        ///< FE solves in all
+    double                   diameter = 0.;       ///< D_F (mm)
+    DesignParameters         design;              ///< the loads and safeties
+    bool                     brittle_hub = false; ///< fracture, not yield
+
+    /** Whether some fit satisfies the design. */
+    bool
+    found() const
+    {
+      return !fits.empty();
+    }
+
+    /** Empty if a fit was found, else why none: the conflict. */
+    std::string
+    conflict() const;
+
+    /** The console table (up to @p max_fits fits). */
+    void
+    print(std::ostream &out, unsigned int max_fits = 10) const;
+
+    /** The "## Fit selection" section of report.md. */
+    void
+    print_markdown(std::ostream &out) const;
+
+    /**
+     * @p parameters with the measured diametral interference @p U (mm)
+     * given directly (no ISO fit, case mean; the smoothing loss kept).
+     */
+    static Parameters
+    at_interference(const Parameters &parameters, double U);
+
+    /** @p parameters at assembly: no load of operation, no corner trend. */
+    static Parameters
+    at_assembly(const Parameters &parameters);
+
+  private:
+    void
+    compute_din(const Parameters &parameters);
+
+    void
+    compute_fe(const Parameters &parameters, const Solve &solve);
+
+    void
+    rank_fits();
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,160 @@
+#include <coaxfit/app/coaxial_fit.h>
+#include <coaxfit/app/fit_case_study.h>
+#include <coaxfit/app/fit_selection_study.h>
+#include <coaxfit/app/resources.h>
+#include <coaxfit/design/fit_selection.h>
+#include <coaxfit/design/verdict.h>
+#include <coaxfit/io/result_directory.h>
+#include <coaxfit/io/result_writers.h>
+#include <coaxfit/io/selection_writers.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace coaxfit
+{
+  FitSelectionStudy::FitSelectionStudy(const Parameters &parameters,
+                                       std::ostream     &out,
+                                       const bool        verbose)
+    : parameters(parameters)
+    , out(out)
+    , verbose(verbose)
+  {}
+
+
+
+  Parameters
+  FitSelectionStudy::checking(const Parameters  &parameters,
+                              const std::string &fit)
+  {
+    Parameters p   = parameters;
+    p.design.mode  = DesignMode::check;
+    p.fit.iso_fit  = fit;
+    p.fit.fit_case = FitCase::all;
+    p.fit_limits   = fit_limits_of(p.fit, p.drawing.joint_diameter);
+    p.geometry.d   = 0.5 * p.fit_limits.effective();
+    // Its parameters.prm (and those of its cases) check this fit.
+    p.used_prm = replace_prm_line(p.used_prm, "Mode", "check");
+    p.used_prm = replace_prm_line(p.used_prm, "ISO fit", fit);
+    p.used_prm = replace_prm_line(p.used_prm, "Case", "all");
+    p.used_prm = replace_prm_line(p.used_prm, "Diametral interference", "");
+    return p;
+  }
+
+
+
+  bool
+  FitSelectionStudy::run()
+  {
+    check_memory(parameters);
+    ResultDirectory directory(parameters.output_directory(),
+                              all_result_file_names());
+    const bool      converged = run_in(directory.staging_path());
+    directory.commit(out);
+    if (verbose)
+      out << "  results in " << parameters.output_directory()
+          << (mean_values.empty() ?
+                "" :
+                " (the first fit's cases in min, mean, max)")
+          << '\n';
+    return converged;
+  }
+
+
+
+  bool
+  FitSelectionStudy::run_in(const std::string &staging)
+  {
+    if (verbose)
+      out << "coaxfit: case " << parameters.case_name
+          << ": fit selection (Design/Mode = select)\n";
+
+    // One case set up once; every state of the selection reuses its
+    // meshes and factorizations.
+    std::ostringstream quiet;
+    CoaxialFit fit(FitSelection::at_interference(FitSelection::at_assembly(
+                                                   parameters),
+                                                 parameters.fit_limits.used()),
+                   quiet,
+                   false);
+    fit.setup_system();
+    const FitSelection selection(parameters, [&](const Parameters &p) {
+      fit.reuse_for(p);
+      fit.solve(nullptr);
+      return fit.solved_state();
+    });
+
+    std::ostringstream section;
+    selection.print_markdown(section);
+    std::ostringstream console;
+    selection.print(console);
+    out << console.str();
+
+    bool        converged = true;
+    std::string first_fit;
+    Verdict     verdict = Verdict::no_fit(selection.conflict());
+    if (selection.found())
+      {
+        first_fit = selection.fits.front().name;
+        if (verbose)
+          out << "coaxfit: the first fit, " << first_fit
+              << ", checked as with Fit/Case = all\n";
+        FitCaseStudy study(checking(parameters, first_fit), out, verbose);
+        study.set_report_section(section.str());
+        converged = study.run_in(staging);
+        verdict.failed.clear();
+        for (const FitCaseStudy::Row &row : study.get_rows())
+          {
+            for (const std::string &f : row.failed)
+              verdict.failed.push_back(to_string(row.fit_case) + ": " + f);
+            if (row.fit_case == FitCase::mean)
+              {
+                const std::vector<std::string> names
+                  = FitCaseStudy::column_names();
+                const auto value = [&](const std::string &name) {
+                  for (unsigned int i = 0; i < names.size(); ++i)
+                    if (names[i] == name)
+                      return row.values[i];
+                  return std::numeric_limits<double>::quiet_NaN();
+                };
+                mean_steps  = row.steps;
+                mean_values = {value("pressure_mid_plane_MPa"),
+                               value("pressure_mean_MPa"),
+                               value("pressure_din_MPa"),
+                               value("torque_capacity_Nm"),
+                               value("torque_capacity_din_Nm"),
+                               value("safety_slip")};
+              }
+          }
+      }
+    else
+      {
+        // No fit: the verdict and the selection are the report.
+        const std::string name   = staging + "/report.md";
+        std::ofstream     report = open_result_file(name);
+        report << "# coaxfit report: fit selection at D_F = "
+               << parameters.drawing.joint_diameter << " mm\n\n## Verdict\n\n"
+               << verdict.line() << "\n\n"
+               << section.str();
+        close_result_file(report, name);
+        out << verdict.line() << '\n';
+      }
+
+    const std::vector<std::string> lines{
+      selection_files::write_csv(selection, staging),
+      selection_files::write_summary(
+        parameters.case_name, selection, verdict, first_fit, staging)};
+    {
+      const std::string name = staging + "/parameters.prm";
+      std::ofstream     prm  = open_result_file(name);
+      prm << parameters.used_prm;
+      close_result_file(prm, name);
+    }
+    if (verbose)
+      for (const std::string &line : lines)
+        out << "  " << line << '\n';
+    return converged;
+  }
+} // namespace coaxfit

@@ -1,0 +1,127 @@
+#include <coaxfit/io/result_writers.h>
+#include <coaxfit/io/selection_writers.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace coaxfit
+{
+  namespace selection_files
+  {
+    namespace
+    {
+      using Json = nlohmann::ordered_json;
+
+      /** A length in mm, null if not finite. */
+      Json
+      length(const double x)
+      {
+        return std::isfinite(x) ? Json(x) : Json(nullptr);
+      }
+
+      Json
+      governing(const FitSelection::End &end)
+      {
+        return {{"state", end.state}, {"criterion", end.criterion}};
+      }
+
+      /**
+       * A safety; null where it is not finite (not known, or an unloaded
+       * part), as summary.json of a run writes it.
+       */
+      Json
+      safety(const double x)
+      {
+        return std::isfinite(x) ? Json(x) : Json(nullptr);
+      }
+    } // namespace
+
+
+
+    std::string
+    write_csv(const FitSelection &selection, const std::string &directory)
+    {
+      const std::string name = directory + "/fit_selection.csv";
+      std::ofstream     csv  = open_result_file(name);
+      csv << "rank,fit,system,preferred,ES_um,EI_um,es_um,ei_um,U_min_um,"
+             "U_max_um\n";
+      unsigned int rank = 0;
+      for (const IsoFit &f : selection.fits)
+        csv << ++rank << ',' << f.name << ','
+            << (f.name[0] == 'H' ? "hole basis" : "shaft basis") << ','
+            << (is_preferred_fit(f.name) ? 1 : 0) << ',' << f.hole_upper << ','
+            << f.hole_lower << ',' << f.shaft_upper << ',' << f.shaft_lower
+            << ',' << f.min_interference() << ',' << f.max_interference()
+            << '\n';
+      close_result_file(csv, name);
+      return "fit_selection.csv: the " + std::to_string(selection.fits.size())
+             + " ISO 286 fits inside [U_min, U_max], ranked";
+    }
+
+
+
+    std::string
+    write_summary(const std::string  &case_name,
+                  const FitSelection &selection,
+                  const Verdict      &verdict,
+                  const std::string  &first_fit,
+                  const std::string  &directory)
+    {
+      Json fits = Json::array();
+      for (const IsoFit &f : selection.fits)
+        fits.push_back({{"fit", f.name},
+                        {"U_min", f.min_interference() / 1000.},
+                        {"U_max", f.max_interference() / 1000.}});
+      Json checks = Json::array();
+      for (const FitSelection::Check &c : selection.checks)
+        checks.push_back(
+          {{"end", c.end},
+           {"state", c.state},
+           {"U", c.U},
+           {"safety_slip", safety(c.safety_slip)},
+           {"safety_yield_hub", safety(c.safety_yield_hub)},
+           {"safety_yield_shaft", safety(c.safety_yield_shaft)},
+           {"safety_fracture_hub", safety(c.safety_fracture_hub)},
+           {"separated_length", c.separated_length},
+           {"contact_lost", c.contact_lost},
+           {"converged", c.converged}});
+      Json j;
+      j["case"] = case_name;
+      j["mode"] = "select";
+      j["selection"]
+        = {{"U_min", length(selection.least.U)},
+           {"U_max", length(selection.largest.U)},
+           {"U_min_din", length(selection.least_din.U)},
+           {"U_max_din", length(selection.largest_din.U)},
+           {"governing",
+            {{"U_min", governing(selection.least)},
+             {"U_max", governing(selection.largest)},
+             {"U_min_din", governing(selection.least_din)},
+             {"U_max_din", governing(selection.largest_din)}}},
+           {"fe_solves", selection.n_solves},
+           {"checks", checks},
+           {"notes", selection.notes},
+           {"fits", fits},
+           {"first_fit", first_fit},
+           {"conflict", selection.conflict()},
+           {"units",
+            "mm, measured (drawing) diametral interference, smoothing loss "
+            "included"}};
+      j["verdict"] = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
+      const std::string name = directory + "/summary.json";
+      std::ofstream     out  = open_result_file(name);
+      out << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+      close_result_file(out, name);
+      return "summary.json: the selection and the verdict";
+    }
+
+
+
+    std::vector<std::string>
+    file_names()
+    {
+      return {"fit_selection.csv", "summary.json"};
+    }
+  } // namespace selection_files
+} // namespace coaxfit

@@ -114,25 +114,9 @@ namespace coaxfit
         for (const FitCaseStudy::Row &row : study.get_rows())
           if (row.fit_case == FitCase::mean)
             {
-              const std::vector<std::string> names
-                = FitCaseStudy::column_names();
-              auto value = [&](const std::string &name) {
-                for (unsigned int i = 0; i < names.size(); ++i)
-                  if (names[i] == name)
-                    return row.values[i];
-                throw std::logic_error("no column " + name);
-              };
-              figures.steps  = row.steps;
-              figures.values = {value("pressure_mid_plane_MPa"),
-                                value("pressure_mean_MPa"),
-                                value("pressure_din_MPa"),
-                                value("torque_capacity_Nm"),
-                                value("torque_capacity_din_Nm"),
-                                value("safety_slip"),
-                                value("safety_yield_hub"),
-                                value("safety_yield_shaft"),
-                                value("safety_yield_hub_assembly"),
-                                value("safety_yield_shaft_assembly")};
+              figures.steps = row.steps;
+              figures.values
+                = FitCaseStudy::values_of(row, CaseFigures::column_names());
             }
         return figures;
       }

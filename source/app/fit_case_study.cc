@@ -5,10 +5,12 @@
 #include <coaxfit/io/result_writers.h>
 #include <coaxfit/io/selection_writers.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace coaxfit
@@ -80,6 +82,23 @@ namespace coaxfit
             "safety_yield_shaft_assembly",
             "safety_fracture_hub",
             "safety_fracture_hub_din"};
+  }
+
+
+
+  std::vector<double>
+  FitCaseStudy::values_of(const Row &row, const std::vector<std::string> &names)
+  {
+    const std::vector<std::string> all = column_names();
+    std::vector<double>            values;
+    for (const std::string &name : names)
+      {
+        const auto at = std::find(all.begin(), all.end(), name);
+        values.push_back(at == all.end() ?
+                           std::numeric_limits<double>::quiet_NaN() :
+                           row.values[at - all.begin()]);
+      }
+    return values;
   }
 
 

@@ -1,3 +1,4 @@
+#include <coaxfit/app/case_batch.h>
 #include <coaxfit/app/coaxial_fit.h>
 #include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/app/fit_selection_study.h>
@@ -111,21 +112,9 @@ namespace coaxfit
               verdict.failed.push_back(to_string(row.fit_case) + ": " + f);
             if (row.fit_case == FitCase::mean)
               {
-                const std::vector<std::string> names
-                  = FitCaseStudy::column_names();
-                const auto value = [&](const std::string &name) {
-                  for (unsigned int i = 0; i < names.size(); ++i)
-                    if (names[i] == name)
-                      return row.values[i];
-                  return std::numeric_limits<double>::quiet_NaN();
-                };
-                mean_steps  = row.steps;
-                mean_values = {value("pressure_mid_plane_MPa"),
-                               value("pressure_mean_MPa"),
-                               value("pressure_din_MPa"),
-                               value("torque_capacity_Nm"),
-                               value("torque_capacity_din_Nm"),
-                               value("safety_slip")};
+                mean_steps = row.steps;
+                mean_values
+                  = FitCaseStudy::values_of(row, CaseFigures::column_names());
               }
           }
       }

@@ -175,7 +175,10 @@ namespace coaxfit
     if (sweep.entry == "Fit/Case")
       base_overrides.emplace_back(sweep.entry, sweep.values.front());
     const Parameters base = read_parameters(filename, base_overrides);
-    if (base.fit.fit_case == FitCase::all)
+    // Design/Mode = select does not use Fit/Case (its first fit is
+    // checked in all three cases).
+    if (base.fit.fit_case == FitCase::all
+        && base.design.mode != DesignMode::select)
       throw InputError("--sweep runs one fit case per value; Fit/Case = all "
                        "is not allowed with it (give min, mean or max)");
     if (!is_declared_entry(sweep.entry))

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cctype>
+#include <limits>
 #include <map>
 #include <set>
 #include <utility>
@@ -38,8 +39,9 @@ namespace coaxfit
       {{60, 75, 90, 110, 130, 160, 190, 220, 250, 290, 320, 360, 400}},
     }};
 
-    using Row          = std::vector<int>;
-    constexpr int none = -1; ///< not defined for this range
+    using Row = std::vector<int>;
+    /** Not defined for this range (no deviation is this far off). */
+    constexpr int none = std::numeric_limits<int>::min();
 
     /**
      * Lower deviations ei (micrometres) of the shafts k to zc per sub-range,

@@ -157,6 +157,12 @@ namespace coaxfit
       {
         fit.iso_fit.clear();
         fit.fit_case = FitCase::mean;
+        // Only a start: without a usable interference (none given, or
+        // more than the model allows, 0.1 D), one per mille of D.
+        const double D = p.drawing.joint_diameter;
+        if (!interference_given
+            || !(std::abs(fit.diametral_interference) <= 0.1 * D))
+          fit.diametral_interference = 1e-3 * D;
       }
     p.fit_limits = fit_limits_of(fit, p.drawing.joint_diameter);
     if (p.design.mode == DesignMode::check)

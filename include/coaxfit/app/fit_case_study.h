@@ -73,6 +73,14 @@ namespace coaxfit
     static std::vector<std::string>
     column_names();
 
+    /**
+     * The figures of @p row named @p names (a subset of column_names(),
+     * as CaseFigures takes them), in that order; NaN for a name the table
+     * does not have.
+     */
+    static std::vector<double>
+    values_of(const Row &row, const std::vector<std::string> &names);
+
     /** The table of the cases (after run()). */
     const std::vector<Row> &
     get_rows() const

@@ -33,13 +33,19 @@ namespace coaxfit
     for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
       {
         std::ostringstream label;
-        label << "max von Mises along " << m.name << " (MPa, z = " << std::fixed
-              << std::setprecision(2) << m.z << " mm)";
+        label << std::fixed << std::setprecision(2) << m.name
+              << ": max von Mises, middle half (MPa, z " << m.interior_z << ")";
+        rows.push_back({label.str(), m.interior, nan});
+        label.str("");
+        label << m.name << ": max von Mises, end zone (MPa, z " << m.z << ")";
         rows.push_back({label.str(), m.von_mises, nan});
       }
     rows.push_back({"safety against yield, hub",
                     design.safety_yield_hub,
                     design.safety_yield_hub_din});
+    rows.push_back({"safety against yield with the end (notch), hub",
+                    design.safety_yield_hub_edge,
+                    nan});
     if (!std::isnan(design.hoop_stress_max_hub))
       {
         rows.push_back({"hub (brittle): max hoop stress (MPa)",
@@ -52,6 +58,9 @@ namespace coaxfit
     rows.push_back({"safety against yield, shaft",
                     design.safety_yield_shaft,
                     design.safety_yield_shaft_din});
+    rows.push_back({"safety against yield with the end (notch), shaft",
+                    design.safety_yield_shaft_edge,
+                    nan});
     return rows;
   }
 
@@ -111,11 +120,11 @@ namespace coaxfit
   {
     std::ostringstream table;
     table << "  design: " << interference_line(parameters) << '\n'
-          << "    " << std::left << std::setw(54) << "" << std::right
+          << "    " << std::left << std::setw(56) << "" << std::right
           << std::setw(12) << "FE" << std::setw(12) << "DIN 7190" << '\n';
     for (const DesignRow &row : design_rows(design))
       {
-        table << "    " << std::left << std::setw(54) << row.label
+        table << "    " << std::left << std::setw(56) << row.label
               << std::right;
         for (const double value : {row.fe, row.din})
           {
@@ -124,9 +133,13 @@ namespace coaxfit
         table << '\n';
       }
     table << "    (von Mises: FE of its full stress state, DIN 7190 of "
-             "Lame's plane stress; maxima at least "
+             "Lame's plane stress; the yield safeties from the mid-plane "
+             "points and the middle half of the joint, where the FE "
+             "stresses converge under refinement; the notch safeties from "
+             "the maxima near the end, at least "
           << std::setprecision(3) << design.edge_distance
-          << " mm from the end of the joint";
+          << " mm from it (Design/Edge distance; they depend on it and on "
+             "the mesh)";
     for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
       table << "; at the end, " << corner_text(m);
     table << ")\n";

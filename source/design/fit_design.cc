@@ -113,6 +113,7 @@ namespace coaxfit
         SurfaceMaximum m;
         m.name        = name;
         m.von_mises   = FitDesign::unknown; // none outside the band
+        m.interior    = FitDesign::unknown;
         double corner = std::numeric_limits<double>::max();
         for (const StressState &s : *states)
           {
@@ -128,6 +129,12 @@ namespace coaxfit
                 m.von_mises = s.von_mises();
                 m.z         = s.z;
               }
+            if (std::abs(s.z) <= 0.5 * z_corner
+                && !(s.von_mises() <= m.interior))
+              {
+                m.interior   = s.von_mises();
+                m.interior_z = s.z;
+              }
           }
         surface_maxima.push_back(m);
       }
@@ -136,14 +143,23 @@ namespace coaxfit
     const auto largest = [](const double a, const double b, const double c) {
       return std::fmax(std::fmax(a, b), c);
     };
-    safety_yield_hub       = safety(parameters.hub.yield_strength,
-                              largest(check_points[0].fe.von_mises(),
-                                      check_points[1].fe.von_mises(),
-                                      surface_maxima[0].von_mises));
-    safety_yield_shaft     = safety(parameters.shaft.yield_strength,
-                                largest(check_points[2].fe.von_mises(),
-                                        check_points[3].fe.von_mises(),
-                                        surface_maxima[1].von_mises));
+    strength_stress_hub   = largest(check_points[0].fe.von_mises(),
+                                  check_points[1].fe.von_mises(),
+                                  surface_maxima[0].interior);
+    strength_stress_shaft = largest(check_points[2].fe.von_mises(),
+                                    check_points[3].fe.von_mises(),
+                                    surface_maxima[1].interior);
+    safety_yield_hub
+      = safety(parameters.hub.yield_strength, strength_stress_hub);
+    safety_yield_shaft
+      = safety(parameters.shaft.yield_strength, strength_stress_shaft);
+    // The whole body with the end of the joint: never above the former.
+    safety_yield_hub_edge
+      = safety(parameters.hub.yield_strength,
+               std::fmax(strength_stress_hub, surface_maxima[0].von_mises));
+    safety_yield_shaft_edge
+      = safety(parameters.shaft.yield_strength,
+               std::fmax(strength_stress_shaft, surface_maxima[1].von_mises));
     safety_yield_hub_din   = safety(parameters.hub.yield_strength,
                                   std::max(check_points[0].din.equivalent(),
                                            check_points[1].din.equivalent()));
@@ -171,7 +187,8 @@ namespace coaxfit
         };
         safety_fracture_hub     = fracture(hoop_stress_max_hub);
         safety_fracture_hub_din = fracture(hoop_stress_max_hub_din);
-        safety_yield_hub = safety_yield_hub_din = FitDesign::unknown;
+        safety_yield_hub = safety_yield_hub_din = safety_yield_hub_edge
+          = FitDesign::unknown;
       }
   }
 

@@ -107,11 +107,14 @@ namespace coaxfit
            "Von Mises stress: of the full stress state for FE, of Lame's "
            "plane stress for DIN 7190. DIN 7190 checks slip with the smallest "
            "interference (Fit/Case = min) and strength and the press-in "
-           "force with the largest (max); Fit/Case = all gives both. Maxima "
-           "along the surfaces are taken at least "
+           "force with the largest (max); Fit/Case = all gives both. The yield "
+           "safeties come from the mid-plane points and the largest stress "
+           "over the middle half of the joint, which converge under "
+           "refinement; the end of the joint is assessed as a notch on its "
+           "own, from the largest stress at least "
         << d.edge_distance
-        << " mm from the end of the joint, where the stresses are singular "
-           "(there: ";
+        << " mm from the end (Design/Edge distance), for the stresses are "
+           "singular at the end itself (there: ";
     for (const FitDesign::SurfaceMaximum &m : d.surface_maxima)
       out << corner_text(m) << (&m == &d.surface_maxima.back() ? "" : "; ");
     out << "; these grow under mesh refinement and are not design "

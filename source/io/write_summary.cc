@@ -169,6 +169,8 @@ namespace coaxfit
         maxima[m.name]
           = {{"von_mises", m.von_mises},
              {"z", m.z},
+             {"von_mises_middle_half", m.interior},
+             {"z_middle_half", m.interior_z},
              {"at_joint_end_singular", m.corner},
              {"at_joint_end_one_refinement_coarser", m.corner_coarser}};
       const DesignParameters &p = results.parameters.design;
@@ -193,6 +195,10 @@ namespace coaxfit
               {"safety_yield_shaft_din", d.safety_yield_shaft_din},
               {"safety_yield_hub", d.safety_yield_hub},
               {"safety_yield_hub_din", d.safety_yield_hub_din},
+              {"strength_stress_shaft", d.strength_stress_shaft},
+              {"strength_stress_hub", d.strength_stress_hub},
+              {"safety_yield_shaft_edge", d.safety_yield_shaft_edge},
+              {"safety_yield_hub_edge", d.safety_yield_hub_edge},
               {"safety_yield_shaft_assembly", d.safety_yield_shaft_assembly},
               {"safety_yield_hub_assembly", d.safety_yield_hub_assembly},
               {"edge_distance", d.edge_distance},

@@ -46,8 +46,19 @@ namespace coaxfit
     struct SurfaceMaximum
     {
       std::string name;
-      double      von_mises = 0., z = 0.;
-      double      corner = 0.; ///< von Mises at the corner (singular)
+      /**
+       * The largest von Mises stress at least the edge distance from the
+       * end of the joint, and where (z, mm): near the end it follows the
+       * singular corner field, and so the edge distance and the mesh.
+       */
+      double von_mises = 0., z = 0.;
+      /**
+       * The largest von Mises stress over the middle half of the joint
+       * (|z| up to a quarter of the joint length), and where: away from
+       * the ends, it converges under refinement.
+       */
+      double interior = 0., interior_z = 0.;
+      double corner = 0.; ///< von Mises at the corner (singular)
       /** The corner value one refinement coarser (NaN: not computed). */
       double corner_coarser = std::numeric_limits<double>::quiet_NaN();
     };
@@ -70,6 +81,23 @@ namespace coaxfit
     double safety_slip, safety_slip_din;
     double safety_yield_shaft, safety_yield_shaft_din;
     double safety_yield_hub, safety_yield_hub_din;
+    /**
+     * The strength figures behind the FE yield safeties (MPa): the largest
+     * von Mises stress of the body at its mid-plane check points and over
+     * the middle half of the joint surface, away from the singular ends,
+     * so that it converges under refinement and does not depend on
+     * Design/Edge distance.
+     */
+    double strength_stress_shaft, strength_stress_hub;
+    /**
+     * The end of the joint as a notch, assessed on its own: the yield
+     * strength over the largest von Mises stress of the body with the
+     * joint surface up to Design/Edge distance from the end included (so
+     * never above the yield safety; depends on the edge distance and on
+     * the mesh; local yielding there is common and not a design criterion
+     * of DIN 7190).
+     */
+    double safety_yield_shaft_edge, safety_yield_hub_edge;
     /**
      * The FE safeties against yield at assembly (room temperature, at
      * rest, no pressures): those above with no loads of operation, else

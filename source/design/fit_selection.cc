@@ -396,6 +396,18 @@ namespace coaxfit
           U = next;
         }
       end.solves = n_solves - before;
+      // Slip still below its safety at the largest interference the model
+      // takes (0.1 D): no interference carries the loads.
+      if (c == Criterion::slip && end.safety < S
+          && end.U >= (1. - 1e-9) * U_limit)
+        {
+          notes.push_back("no interference up to the model's limit (U_w = "
+                          "0.1 D) carries the loads: safety against slip "
+                          + safety_text(end.safety) + " at U = " + mm(end.U)
+                          + " mm");
+          end.U = infinite;
+          return end;
+        }
       if (!(end.safety >= S && end.safety <= (1. + 1e-3) * S))
         notes.push_back("the " + end.criterion + " " + end.state
                         + " did not reach its safety (to 0.1 %, not below) "

@@ -260,6 +260,18 @@ namespace coaxfit
         joining_hub_above_limit
           = joining_temperature_hub > parameters.hub.temperature_limit;
       }
+    // Both at once: the hub at its limit, the shaft in liquid nitrogen.
+    if (joining_hub_above_limit && !joining_cooling_reachable
+        && std::isfinite(joining_temperature_shaft))
+      {
+        joining_needed = U + joining_clearance;
+        joining_by_both
+          = D_F
+            * (parameters.hub.thermal_expansion
+                 * (parameters.hub.temperature_limit - o.assembly_temperature)
+               + joining_cooling_expansion
+                   * (o.assembly_temperature - coldest_coolant));
+      }
   }
 
 
@@ -280,17 +292,8 @@ namespace coaxfit
                         + " instead avoids it";
         else
           {
-            // Both at once: the hub at its limit, the shaft in liquid
-            // nitrogen.
-            const double T_a = parameters.operation.assembly_temperature;
-            const double D_F = parameters.drawing.joint_diameter;
-            const double needed
-              = std::max(joining_interference, -joining_clearance)
-                + joining_clearance;
-            const double both
-              = D_F
-                * (hub.thermal_expansion * (hub.temperature_limit - T_a)
-                   + joining_cooling_expansion * (T_a - coldest_coolant));
+            const double       needed = joining_needed;
+            const double       both   = joining_by_both;
             std::ostringstream a;
             a << std::setprecision(3)
               << "; cooling the shaft instead is not reachable ("

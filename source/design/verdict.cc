@@ -90,13 +90,16 @@ namespace coaxfit
                            + figure(design.fracture_safety)
                            + " (Design/Fracture safety)");
 
-    // Joining: either way is enough.
+    // Joining: either way is enough, or both at once (the hub at its
+    // limit, the shaft in liquid nitrogen).
     const bool heating_known = !std::isnan(operation.joining_temperature_hub);
     const bool cooling_known = !std::isnan(operation.joining_temperature_shaft);
     const bool heating_ok = heating_known && !operation.joining_hub_above_limit;
     const bool cooling_ok
       = cooling_known && operation.joining_cooling_reachable;
-    if ((heating_known || cooling_known) && !heating_ok && !cooling_ok)
+    const bool both_ok = operation.joining_by_both >= operation.joining_needed;
+    if ((heating_known || cooling_known) && !heating_ok && !cooling_ok
+        && !both_ok)
       failed.push_back(
         "joining temperature not reachable: the hub "
         + (heating_known ? "at " + celsius(operation.joining_temperature_hub)

@@ -116,6 +116,12 @@ namespace coaxfit
     double hub_temperature_limit = unknown;
     /** Whether the hub's joining temperature is above that limit. */
     bool joining_hub_above_limit = false;
+    /**
+     * When neither way alone is reachable: the hub at its temperature
+     * limit and the shaft at -196 C together open joining_by_both (mm)
+     * of the joining_needed (mm: U_max and the clearance); NaN otherwise.
+     */
+    double joining_by_both = unknown, joining_needed = unknown;
     /** @} */
 
     /** The coldest coolant used for joining: liquid nitrogen (C). */

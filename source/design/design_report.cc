@@ -67,15 +67,26 @@ namespace coaxfit
 
 
   std::string
+  figure_text(const double value, const int precision)
+  {
+    if (std::isnan(value))
+      return "-";
+    if (std::isinf(value))
+      return value > 0. ? "infinite" : "-infinite";
+    std::ostringstream s;
+    s << std::setprecision(precision) << value;
+    return s.str();
+  }
+
+
+
+  std::string
   design_figure(const double value)
   {
-    if (std::isinf(value) && value > 0.)
-      return "infinite"; // a safety of an unloaded part
-    if (!std::isfinite(value))
+    // +infinity: a safety of an unloaded part; -infinity is not a figure.
+    if (std::isinf(value) && value < 0.)
       return "-";
-    std::ostringstream s;
-    s << std::setprecision(std::abs(value) >= 1e5 ? 4 : 5) << value;
-    return s.str();
+    return figure_text(value, std::abs(value) >= 1e5 ? 4 : 5);
   }
 
 

@@ -1,3 +1,4 @@
+#include <coaxfit/design/design_report.h>
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/fit_selection.h>
 
@@ -145,30 +146,18 @@ namespace coaxfit
                    std::max(din.hub_bore().hoop, din.hub_outer().hoop));
     }
 
+    /** An interference (mm) in words. */
     std::string
     mm(const double x)
     {
-      std::ostringstream s;
-      if (std::isinf(x))
-        s << (x > 0 ? "infinite" : "-infinite");
-      else if (std::isnan(x))
-        s << "-";
-      else
-        s << std::setprecision(5) << x;
-      return s.str();
+      return figure_text(x, 5);
     }
 
+    /** A safety in words. */
     std::string
     safety_text(const double x)
     {
-      std::ostringstream s;
-      if (std::isinf(x))
-        s << "infinite";
-      else if (std::isnan(x))
-        s << "-";
-      else
-        s << std::setprecision(4) << x;
-      return s.str();
+      return figure_text(x, 4);
     }
   } // namespace
 

@@ -1,5 +1,6 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/coupling/scene.h>
+#include <coaxfit/design/design_report.h>
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/parameters/parameter_checks.h>
@@ -375,16 +376,7 @@ namespace coaxfit
   OperationAnalysis::print(std::ostream &out) const
   {
     std::ostringstream s;
-    const auto         figure = [](const double x) {
-      std::ostringstream f;
-      if (std::isnan(x))
-        f << "-";
-      else if (std::isinf(x))
-        f << "infinite";
-      else
-        f << std::setprecision(5) << x;
-      return f.str();
-    };
+    const auto figure = [](const double x) { return figure_text(x, 5); };
     const auto row
       = [&](const std::string &what, const double a, const double b) {
           s << "    " << std::left << std::setw(44) << what << std::right

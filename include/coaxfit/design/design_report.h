@@ -22,6 +22,13 @@ namespace coaxfit
   design_rows(const FitDesign &design);
 
   /**
+   * A figure in @p precision significant digits: "-" for one that is not
+   * given (NaN), "infinite" or "-infinite" for an infinite one.
+   */
+  std::string
+  figure_text(double value, int precision);
+
+  /**
    * A design figure as the table and the report print it: 5 significant
    * digits (4 from 1e5 on), "-" for a figure that is not given (NaN).
    */

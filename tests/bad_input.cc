@@ -205,6 +205,27 @@ main()
       file_with("material_unknown",
                 "subsection Material\n subsection Hub\n  set Name = S235\n "
                 "end\nend\n"));
+  // The friction coefficient: auto for a pairing DIN 7190-1 does not
+  // tabulate, a number out of range, a malformed one; a material entry out
+  // of its pattern is named with its subsection.
+  run("friction_pairing_without_steel",
+      file_with("friction_pairing_without_steel",
+                "subsection Material\n subsection Shaft\n  set Name = EN AW-"
+                "7075 T6\n end\n subsection Hub\n  set Name = EN-GJL-250\n "
+                "end\nend\n"));
+  run("friction_zero",
+      file_with("friction_zero",
+                "subsection Design\n  set Friction coefficient = 0\nend\n"));
+  run("friction_malformed",
+      file_with("friction_malformed",
+                "subsection Design\n  set Friction coefficient = 0.1x\nend\n"));
+  run("joining_unknown",
+      file_with("joining_unknown",
+                "subsection Design\n  set Joining = glue\nend\n"));
+  run("material_E_malformed",
+      file_with("material_E_malformed",
+                "subsection Material\n subsection Hub\n  set E = 2e5 MPa\n "
+                "end\nend\n"));
   std::ofstream("includes_itself.prm") << "include includes_itself.prm\n";
   run("include_cycle", "includes_itself.prm");
   std::ofstream("deep.json")

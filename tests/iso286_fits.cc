@@ -6,7 +6,9 @@
 // The limit deviations below are typed from ISO 286-2's tables, not
 // computed; then the candidates at 40 mm are counted and the preferred
 // fits named. tests/iso286_table.cc covers the hole-basis interference
-// fits.
+// fits. The symmetric classes js and JS (es = +IT/2, ei = -IT/2) are
+// checked where ISO 286-2 has half micrometres (js5, js6 with an odd IT)
+// and where it rounds an odd IT down to the even value (js7, JS7, JS8).
 #include <coaxfit/parameters/iso286.h>
 
 #include <iostream>
@@ -19,7 +21,7 @@ namespace
   {
     std::string fit;
     double      diameter;
-    int         ES, EI, es, ei; // micrometres
+    double      ES, EI, es, ei; // micrometres
   };
 
   // ISO 286-2 limit deviations (hole ES/EI, shaft es/ei) in micrometres.
@@ -38,7 +40,11 @@ namespace
        {"N7/h6", 10, -4, -19, 0, -9},    {"K7/h6", 10, 5, -10, 0, -9},
        {"M7/h6", 2, -2, -12, 0, -6},     {"N7/h6", 2, -4, -14, 0, -6},
        {"P7/h6", 2, -6, -16, 0, -6},     {"S7/h6", 2, -14, -24, 0, -6},
-       {"M6/h5", 300, -9, -41, 0, -23},  {"M6/h5", 5, -1, -9, 0, -5}};
+       {"M6/h5", 300, -9, -41, 0, -23},  {"M6/h5", 5, -1, -9, 0, -5},
+       {"H7/js6", 40, 25, 0, 8, -8},     {"H6/js5", 40, 16, 0, 5.5, -5.5},
+       {"H8/js7", 40, 39, 0, 12, -12},   {"JS7/h6", 40, 12, -12, 0, -16},
+       {"JS6/h5", 40, 8, -8, 0, -11},    {"H7/js6", 10, 15, 0, 4.5, -4.5},
+       {"H8/js7", 10, 22, 0, 7, -7},     {"JS8/h7", 100, 27, -27, 0, -35}};
 } // namespace
 
 

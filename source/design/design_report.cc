@@ -131,6 +131,9 @@ namespace coaxfit
   {
     std::ostringstream table;
     table << "  design: " << interference_line(parameters) << '\n'
+          << "    friction against slip "
+          << parameters.design.friction_coefficient << " ("
+          << parameters.design.friction_source << ")\n"
           << "    " << std::left << std::setw(56) << "" << std::right
           << std::setw(12) << "FE" << std::setw(12) << "DIN 7190" << '\n';
     for (const DesignRow &row : design_rows(design))

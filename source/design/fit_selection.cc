@@ -1,6 +1,7 @@
 #include <coaxfit/design/design_report.h>
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/fit_selection.h>
+#include <coaxfit/design/operation_analysis.h>
 
 #include <algorithm>
 #include <cmath>
@@ -202,9 +203,85 @@ namespace coaxfit
     , design(parameters.design)
     , brittle_hub(parameters.hub.kind == MaterialKind::brittle)
   {
+    // Select mode chooses the fit: what Fit gives for a check is unused.
+    if (!parameters.fit.iso_fit.empty()
+        || parameters.fit.fit_case != FitCase::mean)
+      notes.push_back(
+        "Fit/ISO fit and Fit/Case are not used in select mode (given: "
+        + (parameters.fit.iso_fit.empty() ? std::string("no ISO fit") :
+                                            parameters.fit.iso_fit)
+        + ", case " + to_string(parameters.fit.fit_case)
+        + "): the selection chooses the fit");
     compute_din(parameters);
     compute_fe(parameters, solve);
+    compute_joining(parameters);
     rank_fits();
+    note_fits();
+  }
+
+
+
+  void
+  FitSelection::compute_joining(const Parameters &parameters)
+  {
+    const OperationParameters &o = parameters.operation;
+    joining_clearance            = o.joining_clearance(diameter);
+    const JoiningMethod method   = parameters.design.joining;
+    if (method != JoiningMethod::shrink
+        && method != JoiningMethod::shrink_degreased)
+      return;
+    const Material &hub = parameters.hub, &shaft = parameters.shaft;
+    if (!(hub.thermal_expansion > 0.) || !(hub.temperature_limit > 0.))
+      return; // heating without a known limit: any fit
+    const double heating = hub.thermal_expansion
+                           * (hub.temperature_limit - o.assembly_temperature);
+    const double cooling
+      = shaft.joining_cooling_expansion()
+        * (o.assembly_temperature - OperationAnalysis::coldest_coolant);
+    joining_opening
+      = diameter * (std::max(heating, 0.) + std::max(cooling, 0.));
+  }
+
+
+
+  void
+  FitSelection::note_fits()
+  {
+    if (!found())
+      return;
+    unsigned int not_joinable = 0, outside_din = 0;
+    for (const IsoFit &f : fits)
+      {
+        not_joinable += joinable(f) ? 0 : 1;
+        outside_din += inside_din_band(f) ? 0 : 1;
+      }
+    std::ostringstream text;
+    text << std::setprecision(4);
+    if (not_joinable > 0)
+      {
+        text << not_joinable << " of the " << fits.size()
+             << " fits cannot be joined by temperature (the hub at its "
+                "limit and the shaft at -196 C open "
+             << joining_opening
+             << " mm, less than U_max plus the joining "
+                "clearance "
+             << joining_clearance
+             << " mm): ranked last, joinable 'no'; they need pressure oil "
+                "or a press";
+        notes.push_back(text.str());
+        text.str("");
+      }
+    if (outside_din > 0)
+      {
+        text << outside_din << " of the " << fits.size()
+             << " fits lie outside DIN 7190's band [" << least_din.U << ", "
+             << largest_din.U
+             << "] mm (DIN 7190 'no'): the finite elements accept them, the "
+                "plain-cylinder formulas do not";
+        if (!inside_din_band(fits.front()))
+          text << "; the first of them is " << fits.front().name;
+        notes.push_back(text.str());
+      }
   }
 
 
@@ -565,11 +642,13 @@ namespace coaxfit
     };
     std::stable_sort(
       fits.begin(), fits.end(), [&](const IsoFit &a, const IsoFit &b) {
+        if (joinable(a) != joinable(b))
+          return joinable(a);
         const bool pa = is_preferred_fit(a.name), pb = is_preferred_fit(b.name);
         if (pa != pb)
           return pa;
-        const int wa = a.max_interference() - a.min_interference(),
-                  wb = b.max_interference() - b.min_interference();
+        const double wa = a.max_interference() - a.min_interference(),
+                     wb = b.max_interference() - b.min_interference();
         if (wa != wb)
           return wa > wb;
         if (offset(a) != offset(b))
@@ -661,18 +740,20 @@ namespace coaxfit
     if (found())
       {
         s << "    fits inside [U_min, U_max]: " << fits.size()
-          << " (ranked: ISO 286-1's preferred first, then the widest "
-             "tolerances, then the best centred)\n"
+          << " (ranked: joinable first, then ISO 286-1's preferred, then "
+             "the widest tolerances, then the best centred)\n"
           << "    " << std::left << std::setw(6) << "rank" << std::setw(10)
           << "fit" << std::right << std::setw(14) << "U_min (um)"
           << std::setw(14) << "U_max (um)"
-          << "  preferred\n";
+          << "  preferred  joinable  DIN 7190\n";
         for (unsigned int i = 0; i < fits.size() && i < max_fits; ++i)
           s << "    " << std::left << std::setw(6) << i + 1 << std::setw(10)
             << fits[i].name << std::right << std::setw(14)
             << fits[i].min_interference() << std::setw(14)
-            << fits[i].max_interference() << "  "
-            << (is_preferred_fit(fits[i].name) ? "yes" : "no") << '\n';
+            << fits[i].max_interference() << "  " << std::left << std::setw(11)
+            << (is_preferred_fit(fits[i].name) ? "yes" : "no") << std::setw(10)
+            << joinable_text(fits[i])
+            << (inside_din_band(fits[i]) ? "yes" : "no") << std::right << '\n';
         if (fits.size() > max_fits)
           s << "    (" << fits.size() - max_fits
             << " more in fit_selection.csv)\n";
@@ -716,15 +797,18 @@ namespace coaxfit
       out << "Note: " << n << ".\n\n";
     if (found())
       {
-        out << "Fits inside [U_min, U_max], ranked (ISO 286-1's preferred "
-               "first, then the widest tolerances, then the best "
-               "centred):\n\n| rank | fit | U_min (um) | U_max (um) | "
-               "preferred |\n|---:|---|---:|---:|---|\n";
+        out << "Fits inside [U_min, U_max], ranked (joinable first, then "
+               "ISO 286-1's preferred, then the widest tolerances, then the "
+               "best centred; DIN 7190: inside DIN 7190's band):\n\n| rank "
+               "| fit | U_min (um) | U_max (um) | preferred | joinable | "
+               "DIN 7190 |\n|---:|---|---:|---:|---|---|---|\n";
         for (unsigned int i = 0; i < fits.size(); ++i)
           out << "| " << i + 1 << " | " << fits[i].name << " | "
               << fits[i].min_interference() << " | "
               << fits[i].max_interference() << " | "
-              << (is_preferred_fit(fits[i].name) ? "yes" : "no") << " |\n";
+              << (is_preferred_fit(fits[i].name) ? "yes" : "no") << " | "
+              << joinable_text(fits[i]) << " | "
+              << (inside_din_band(fits[i]) ? "yes" : "no") << " |\n";
         out << '\n';
       }
     else

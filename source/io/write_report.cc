@@ -57,7 +57,8 @@ namespace coaxfit
           << "| shaft | " << material_line(p.shaft) << " |\n"
           << "| hub | " << material_line(p.hub) << " |\n"
           << "| friction: slip, press-in | " << p.design.friction_coefficient
-          << ", " << p.design.press_in_friction_coefficient << " |\n"
+          << " (" << p.design.friction_source << "), "
+          << p.design.press_in_friction_coefficient << " |\n"
           << "| required torque, axial force | " << p.design.required_torque
           << " N m, " << p.design.required_axial_force << " N |\n"
           << "| mesh | " << cells << " cells, " << dofs << " DoFs, FE_Q("

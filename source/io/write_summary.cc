@@ -176,6 +176,8 @@ namespace coaxfit
       const DesignParameters &p = results.parameters.design;
       return {{"units", "MPa, N, N m, mm"},
               {"friction_coefficient", p.friction_coefficient},
+              {"friction_source", p.friction_source},
+              {"joining", to_string(p.joining)},
               {"press_in_friction_coefficient",
                p.press_in_friction_coefficient},
               {"required_torque", p.required_torque},

@@ -104,8 +104,8 @@ namespace coaxfit
 
     const char *covered
       = "covered are the interference and transition fits of the hole "
-        "basis H5..H11 / k..zc and the shaft basis K5..K8, M5..M8, N5..N11, "
-        "P..ZC 5..11 / h5..h11 (e.g. H7/s6, S7/h6), nominal diameters over "
+        "basis H5..H11 / js, k..zc and the shaft basis JS5..JS11, K5..K8, "
+        "M5..M8, N5..N11, P..ZC 5..11 / h5..h11 (e.g. H7/s6, S7/h6), nominal diameters over "
         "1 up to 500 mm";
 
     [[noreturn]] void
@@ -202,24 +202,40 @@ namespace coaxfit
     tabulated_grades(const std::string &letter)
     {
       static const std::map<std::string, std::pair<unsigned int, unsigned int>>
-        grades{{"k", {5, 11}},  {"m", {5, 9}},   {"n", {5, 9}},
-               {"p", {5, 10}},  {"r", {5, 10}},  {"s", {5, 10}},
-               {"t", {5, 8}},   {"u", {5, 9}},   {"v", {5, 8}},
-               {"x", {5, 10}},  {"y", {6, 10}},  {"z", {6, 11}},
-               {"za", {6, 11}}, {"zb", {7, 11}}, {"zc", {7, 11}},
-               {"K", {5, 8}},   {"M", {5, 8}},   {"N", {5, 11}},
-               {"P", {5, 10}},  {"R", {5, 10}},  {"S", {5, 10}},
-               {"T", {5, 8}},   {"U", {5, 10}},  {"V", {5, 8}},
-               {"X", {5, 10}},  {"Y", {6, 10}},  {"Z", {6, 11}},
-               {"ZA", {6, 11}}, {"ZB", {7, 11}}, {"ZC", {7, 11}}};
+        grades{{"js", {5, 11}}, {"JS", {5, 11}}, {"k", {5, 11}},
+               {"m", {5, 9}},   {"n", {5, 9}},   {"p", {5, 10}},
+               {"r", {5, 10}},  {"s", {5, 10}},  {"t", {5, 8}},
+               {"u", {5, 9}},   {"v", {5, 8}},   {"x", {5, 10}},
+               {"y", {6, 10}},  {"z", {6, 11}},  {"za", {6, 11}},
+               {"zb", {7, 11}}, {"zc", {7, 11}}, {"K", {5, 8}},
+               {"M", {5, 8}},   {"N", {5, 11}},  {"P", {5, 10}},
+               {"R", {5, 10}},  {"S", {5, 10}},  {"T", {5, 8}},
+               {"U", {5, 10}},  {"V", {5, 8}},   {"X", {5, 10}},
+               {"Y", {6, 10}},  {"Z", {6, 11}},  {"ZA", {6, 11}},
+               {"ZB", {7, 11}}, {"ZC", {7, 11}}};
       return grades.at(letter);
     }
 
-    /** The hole letters of the shaft basis: K, M, N, P to ZC. */
+    /**
+     * Half the tolerance of the symmetric classes js and JS in grade
+     * @p grade at @p diameter (micrometres): IT/2, with an odd IT of the
+     * grades 7 to 11 first rounded down to the even value below (ISO
+     * 286-2's tables, whole micrometres there; js5 and js6 keep halves).
+     */
+    double
+    symmetric_deviation(const unsigned int grade, const double diameter)
+    {
+      int tolerance = standard_tolerance(grade, diameter);
+      if (grade >= 7 && tolerance % 2 != 0)
+        --tolerance;
+      return 0.5 * tolerance;
+    }
+
+    /** The hole letters of the shaft basis: JS, K, M, N, P to ZC. */
     bool
     shaft_basis_hole(const std::string &letter)
     {
-      return letter == "K" || letter == "M" || letter == "N"
+      return letter == "JS" || letter == "K" || letter == "M" || letter == "N"
              || (fundamental_deviations().count(lower(letter)) > 0
                  && letter != "k" && lower(letter) != letter
                  && lower(letter) >= "p");
@@ -268,7 +284,7 @@ namespace coaxfit
              "the shaft basis pairs hole '" + hole
                + "' with a shaft h (such as " + hole + "7/h6)");
     const auto &table = fundamental_deviations();
-    if (hole_basis && table.find(shaft) == table.end())
+    if (hole_basis && shaft != "js" && table.find(shaft) == table.end())
       refuse(designation,
              "shaft '" + shaft
                + "' is not an interference or transition class k..zc "
@@ -285,7 +301,23 @@ namespace coaxfit
 
     IsoFit fit;
     fit.name = compact;
-    if (hole_basis)
+    if (hole_basis && shaft == "js")
+      {
+        const double half = symmetric_deviation(shaft_grade, diameter);
+        fit.hole_lower    = 0;
+        fit.hole_upper    = standard_tolerance(hole_grade, diameter);
+        fit.shaft_lower   = -half;
+        fit.shaft_upper   = half;
+      }
+    else if (!hole_basis && hole == "JS")
+      {
+        const double half = symmetric_deviation(hole_grade, diameter);
+        fit.hole_upper    = half;
+        fit.hole_lower    = -half;
+        fit.shaft_upper   = 0;
+        fit.shaft_lower   = -standard_tolerance(shaft_grade, diameter);
+      }
+    else if (hole_basis)
       {
         const int ei = shaft_deviation(shaft, shaft_grade, diameter);
         if (ei == none)
@@ -320,10 +352,12 @@ namespace coaxfit
     std::vector<IsoFit> fits;
     if (!(diameter > 1.) || diameter > 500.)
       return fits;
+    std::vector<std::string> letters{"js"};
     for (const auto &[letter, row] : fundamental_deviations())
+      if (row[range_index(sub_range_limits, diameter)] != none)
+        letters.push_back(letter);
+    for (const std::string &letter : letters)
       {
-        if (row[range_index(sub_range_limits, diameter)] == none)
-          continue;
         std::string hole_letter = letter;
         for (char &c : hole_letter)
           c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));

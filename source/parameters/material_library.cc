@@ -18,6 +18,26 @@ namespace coaxfit
 
 
 
+  std::string
+  to_string(const MaterialFamily family)
+  {
+    switch (family)
+      {
+        case MaterialFamily::steel:
+          return "steel";
+        case MaterialFamily::cast_iron:
+          return "cast iron";
+        case MaterialFamily::light_alloy:
+          return "light alloy";
+        case MaterialFamily::copper_alloy:
+          return "copper alloy";
+        default:
+          return "unknown";
+      }
+  }
+
+
+
   const std::vector<MaterialData> &
   material_library()
   {
@@ -46,6 +66,7 @@ namespace coaxfit
        350.,
        "the usual limit for heating a steel hub (scaling)",
        MaterialKind::metal,
+       MaterialFamily::steel,
        "EN 10025-2 structural steel S355JR, R_eH for t <= 16 mm, R_m "
        "470-630 MPa for 3 <= t <= 100 mm"},
       {"C45",
@@ -59,6 +80,7 @@ namespace coaxfit
        350.,
        "the usual limit for heating a steel hub (scaling)",
        MaterialKind::metal,
+       MaterialFamily::steel,
        "EN 10083-2 C45+N (normalized), R_eH for d <= 16 mm (305 MPa for "
        "16 < d <= 100 mm), R_m 620 MPa for d <= 16 mm"},
       {"42CrMo4",
@@ -72,6 +94,7 @@ namespace coaxfit
        540.,
        "the lowest tempering temperature of +QT, 540-680 C",
        MaterialKind::metal,
+       MaterialFamily::steel,
        "EN 10083-3 42CrMo4+QT, R_e for d <= 16 mm (750 MPa for 16 < d <= "
        "40 mm, 650 MPa for 40 < d <= 100 mm), R_m 1100-1300 MPa for d <= "
        "16 mm; tempered at 540-680 C"},
@@ -86,6 +109,7 @@ namespace coaxfit
        540.,
        "the lowest tempering temperature of +QT, 540-660 C",
        MaterialKind::metal,
+       MaterialFamily::steel,
        "EN 10083-3 34CrNiMo6+QT, R_e for d <= 16 mm (900 MPa for 16 < d <= "
        "40 mm, 800 MPa for 40 < d <= 100 mm), R_m 1200-1400 MPa for d <= "
        "16 mm; tempered at 540-660 C"},
@@ -101,6 +125,7 @@ namespace coaxfit
        "the tempering temperature of case-hardened parts, 150-200 C: "
        "the hardened case softens",
        MaterialKind::metal,
+       MaterialFamily::steel,
        "EN 10084 case hardening steel 16MnCr5, the core after case "
        "hardening and tempering at 150-200 C: R_m >= 1000 MPa for d <= "
        "16 mm (producer data sheet), R_p0.2 about 735 MPa on the 11 mm test "
@@ -117,6 +142,7 @@ namespace coaxfit
        350.,
        "the usual limit for heating a steel hub (scaling)",
        MaterialKind::metal,
+       MaterialFamily::steel,
        "EN 10297-1 seamless tube steel E355+N, R_eH for T <= 16 mm, R_m "
        "490-630 MPa"},
       {"EN-GJL-250",
@@ -130,6 +156,7 @@ namespace coaxfit
        350.,
        "the usual limit for heating a cast iron hub",
        MaterialKind::brittle,
+       MaterialFamily::cast_iron,
        "EN 1561 grey cast iron EN-GJL-250, E 103-118 GPa, R_p0.1 165-228 MPa "
        "(lower bound), R_m 250 MPa (separately cast sample); brittle: "
        "DIN 7190 assesses it by the hoop stress against R_m"},
@@ -144,6 +171,7 @@ namespace coaxfit
        350.,
        "the usual limit for heating a cast iron hub",
        MaterialKind::metal,
+       MaterialFamily::cast_iron,
        "EN 1563 spheroidal graphite cast iron EN-GJS-400-15 (ferritic, "
        "ductile: elongation 15 %), R_p0.2 250 MPa, R_m 400 MPa for wall "
        "thicknesses t <= 30 mm, E 169 GPa and nu 0.275 from the standard's "
@@ -160,6 +188,7 @@ namespace coaxfit
        "the artificial ageing temperature of T6, 160-180 C: the alloy "
        "over-ages and loses strength",
        MaterialKind::metal,
+       MaterialFamily::light_alloy,
        "EN 755-2 aluminium alloy EN AW-6082 T6, R_p0.2 250 MPa and R_m "
        "295 MPa for extruded bars of small section (D <= 20 mm)"},
       {"EN AW-7075 T6",
@@ -174,6 +203,7 @@ namespace coaxfit
        "the artificial ageing temperature of T6, about 120 C: the alloy "
        "over-ages and loses strength",
        MaterialKind::metal,
+       MaterialFamily::light_alloy,
        "EN 755-2 aluminium alloy EN AW-7075 T6, R_p0.2 480 MPa and R_m "
        "540 MPa for extruded bars D <= 25 mm"},
       {"CuSn8",
@@ -187,6 +217,7 @@ namespace coaxfit
        200.,
        "about where stress relieving of the cold-worked state begins",
        MaterialKind::metal,
+       MaterialFamily::copper_alloy,
        "EN 12166 tin bronze CuSn8 (CW453K) R390, R_m 390 MPa, R_p0.2 about "
        "170 MPa (indicative)"}};
     return library;

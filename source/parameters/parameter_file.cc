@@ -174,4 +174,37 @@ namespace coaxfit
       }
     return files;
   }
+
+
+
+  std::string
+  subsection_at_line(const std::string &filename, const unsigned int line)
+  {
+    std::ifstream            in(filename);
+    std::vector<std::string> path;
+    std::string              text;
+    for (unsigned int n = 1; n < line && std::getline(in, text); ++n)
+      {
+        // The first word of the line, comments removed.
+        text                    = text.substr(0, text.find('#'));
+        const std::size_t first = text.find_first_not_of(" \t");
+        if (first == std::string::npos)
+          continue;
+        const std::size_t end  = text.find_first_of(" \t", first);
+        const std::string word = text.substr(first, end - first);
+        if (word == "subsection" && end != std::string::npos)
+          {
+            const std::size_t name = text.find_first_not_of(" \t", end);
+            const std::size_t last = text.find_last_not_of(" \t\r");
+            if (name != std::string::npos)
+              path.push_back(text.substr(name, last + 1 - name));
+          }
+        else if (word == "end" && !path.empty())
+          path.pop_back();
+      }
+    std::string joined;
+    for (const std::string &p : path)
+      joined += (joined.empty() ? "" : "/") + p;
+    return joined;
+  }
 } // namespace coaxfit

@@ -1248,8 +1248,26 @@ namespace coaxfit
       }
     catch (const std::exception &exc)
       {
-        // deal.II's messages about a line already name the file.
-        const std::string message = one_line_message(exc);
+        // deal.II's messages about a line already name the file; they
+        // name an entry without its subsection, which is added.
+        std::string       message = one_line_message(exc);
+        const std::size_t at      = message.find("Line <");
+        const std::size_t of      = message.find("> of file <");
+        const std::size_t named   = message.find("for the entry named ");
+        if (at != std::string::npos && of != std::string::npos
+            && named != std::string::npos)
+          {
+            const std::size_t file_end = message.find('>', of + 11);
+            const std::string file
+              = message.substr(of + 11, file_end - of - 11);
+            const std::string section = subsection_at_line(
+              file, std::stoi(message.substr(at + 6, of - at - 6)));
+            const std::size_t entry     = named + 20;
+            const std::size_t entry_end = message.find(' ', entry);
+            if (!section.empty() && entry_end != std::string::npos)
+              message = message.substr(0, entry) + section + "/"
+                        + message.substr(entry);
+          }
         throw InputError(message.find("of file <") != std::string::npos ?
                            message :
                            "in parameter file '" + filename + "': " + message);

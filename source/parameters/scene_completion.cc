@@ -36,6 +36,7 @@ namespace coaxfit
         material.kind = MaterialKind::metal;
       if (data == nullptr)
         return;
+      material.family = data->family;
       if (missing.erase(prefix + "E") > 0)
         material.E = data->E;
       if (missing.erase(prefix + "nu") > 0)
@@ -148,6 +149,7 @@ namespace coaxfit
       }
     if (!missing.empty())
       return; // read_parameters() names what is missing
+    p.design.resolve_friction(p.shaft.family, p.hub.family);
     p.drawing.validate();
     // A selection chooses the fit: Fit/ISO fit and Fit/Case are not used
     // (the interference given only starts its solves when DIN 7190's ends

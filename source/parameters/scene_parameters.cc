@@ -1,5 +1,10 @@
+#include <coaxfit/base/input_error.h>
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/scene_parameters.h>
+
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace coaxfit
 {
@@ -218,13 +223,34 @@ namespace coaxfit
                       "Dimensionless. Allowed: 1 to 10.",
                       Patterns::Double(1., 10.));
     prm.add_parameter("Friction coefficient",
-                      friction_coefficient,
+                      friction_text,
                       "Coefficient of static friction of the joint against "
                       "slip (DIN 7190's nu_r), for the transmissible torque "
-                      "and axial force. The default is a typical value for "
-                      "steel on steel; DIN 7190 tabulates it by pairing and "
-                      "joining method: set yours. Allowed: 1e-6 <= mu <= 1.",
-                      Patterns::Double(1e-6, 1.));
+                      "and axial force. auto: DIN 7190-1's value for the "
+                      "pairing of the Material Names and the Joining: "
+                      "steel on steel 0.15 shrunk (degreased 0.20), 0.12 "
+                      "by pressure oil (degreased 0.18); steel on cast iron "
+                      "0.10 (degreased 0.16); steel on light alloys 0.10; "
+                      "steel on copper alloys 0.17 (the lower ends of the "
+                      "standard's ranges); a material without a Name is "
+                      "taken as steel; the report names the value's "
+                      "source. A number overrides it (the value of your "
+                      "tests). Allowed: auto or 1e-6 <= mu <= 1.",
+                      Patterns::Anything());
+    prm.add_parameter("Joining",
+                      joining_text,
+                      "How the joint is made, for the automatic Friction "
+                      "coefficient: shrink (the hub heated or the shaft "
+                      "cooled, surfaces as machined), shrink degreased, "
+                      "pressure oil (widened by oil injection, joined with "
+                      "mineral oil), pressure oil degreased (joined with "
+                      "glycerine), press (pressed in lengthwise; DIN "
+                      "7190-1's oiled pressure oil value). The joining "
+                      "temperatures are printed for every method.",
+                      Patterns::Selection(joining_method_names()));
+    prm.add_action("Joining", [this](const std::string &value) {
+      joining = joining_method(value);
+    });
     prm.add_parameter("Press-in friction coefficient",
                       press_in_friction_coefficient,
                       "Coefficient of sliding friction while the shaft is "
@@ -286,6 +312,39 @@ namespace coaxfit
                       "singular corner) grow with refinement. Reported "
                       "next to the corner values, never a design figure.");
     prm.leave_subsection();
+  }
+
+
+
+  void
+  DesignParameters::resolve_friction(const MaterialFamily shaft,
+                                     const MaterialFamily hub)
+  {
+    const auto first = friction_text.find_first_not_of(" \t");
+    if (first == std::string::npos
+        || friction_text.compare(first, 4, "auto") == 0)
+      {
+        const FrictionValue value = din7190_friction(shaft, hub, joining);
+        friction_coefficient      = value.coefficient;
+        friction_source           = value.source;
+        return;
+      }
+    std::size_t end = 0;
+    double      mu  = std::numeric_limits<double>::quiet_NaN();
+    try
+      {
+        mu = std::stod(friction_text, &end);
+      }
+    catch (const std::exception &)
+      {}
+    if (!(mu >= 1e-6 && mu <= 1.)
+        || friction_text.find_first_not_of(" \t", end) != std::string::npos)
+      throw InputError("parameter Design/Friction coefficient = '"
+                       + friction_text
+                       + "' is not allowed: allowed is auto or a number "
+                         "from 1e-6 to 1");
+    friction_coefficient = mu;
+    friction_source      = "Design/Friction coefficient";
   }
 
 

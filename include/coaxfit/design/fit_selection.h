@@ -5,6 +5,7 @@
 #include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/parameters.h>
 
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <ostream>
@@ -47,9 +48,12 @@ namespace coaxfit
    * is exact; the yield end is the root of the equivalent stress at the
    * check points, found by bisection of the closed form.
    *
-   * Ranking of the fits: the preferred fits of ISO 286-1 first, then the
-   * widest tolerances (IT of hole plus IT of shaft, the interference band
-   * es - ei + ES - EI), then the band best centred in [U_min, U_max].
+   * Ranking of the fits: those that can be joined (joinable()) first,
+   * then the preferred fits of ISO 286-1, then the widest tolerances (IT
+   * of hole plus IT of shaft, the interference band es - ei + ES - EI),
+   * then the band best centred in [U_min, U_max]. Each fit is also marked
+   * whether its band lies inside DIN 7190's [U_min_din, U_max_din]: the
+   * finite elements may accept a fit the plain-cylinder formulas do not.
    */
   class FitSelection
   {
@@ -98,6 +102,53 @@ namespace coaxfit
     DesignParameters         design;              ///< the loads and safeties
     bool                     brittle_hub = false; ///< fracture, not yield
 
+    /**
+     * The diametral opening (mm) that joining by temperature reaches with
+     * Design/Joining = shrink: the hub heated to its temperature limit
+     * and the shaft cooled to -196 C (liquid nitrogen) together; infinite
+     * where a part has no limit or the joint is not shrunk (pressure oil,
+     * press: not assessed here).
+     */
+    double joining_opening   = infinite;
+    double joining_clearance = 0.; ///< mm, Operation/Joining clearance
+
+    /**
+     * Whether @p fit can be joined by temperature: its largest
+     * interference plus the joining clearance within joining_opening.
+     */
+    bool
+    joinable(const IsoFit &fit) const
+    {
+      return 1e-3 * fit.max_interference() + joining_clearance
+             <= joining_opening;
+    }
+
+    /**
+     * Whether joining by temperature was assessed (joining_opening is
+     * finite); if not, joinable() is true for every fit and the tables
+     * print "-" for it.
+     */
+    bool
+    joining_assessed() const
+    {
+      return std::isfinite(joining_opening);
+    }
+
+    /** "yes", "no", or "-" where joining was not assessed. */
+    std::string
+    joinable_text(const IsoFit &fit) const
+    {
+      return !joining_assessed() ? "-" : joinable(fit) ? "yes" : "no";
+    }
+
+    /** Whether the band of @p fit lies inside DIN 7190's [U_min, U_max]. */
+    bool
+    inside_din_band(const IsoFit &fit) const
+    {
+      return 1e-3 * fit.min_interference() >= least_din.U
+             && 1e-3 * fit.max_interference() <= largest_din.U;
+    }
+
     /** Whether some fit satisfies the design. */
     bool
     found() const
@@ -136,7 +187,13 @@ namespace coaxfit
     compute_fe(const Parameters &parameters, const Solve &solve);
 
     void
+    compute_joining(const Parameters &parameters);
+
+    void
     rank_fits();
+
+    void
+    note_fits();
   };
 } // namespace coaxfit
 

@@ -13,9 +13,13 @@ namespace coaxfit
    * (the hole or the shaft system of ISO 286-1):
    * - hole basis `H7/s6`: holes H (EI = 0, ES = IT) in grades 5 to 11,
    *   shafts k, m, n, p, r, s, t, u, v, x, y, z, za, zb, zc in grades 5 to
-   *   11 (ei = the fundamental deviation, es = ei + IT);
+   *   11 (ei = the fundamental deviation, es = ei + IT), and js in grades
+   *   5 to 11 (es = +IT/2, ei = -IT/2; for js7 to js11 an odd IT is first
+   *   rounded down to the even value below, as ISO 286-2 does, so that
+   *   js5 and js6 alone have half micrometres);
    * - shaft basis `S7/h6`: shafts h (es = 0, ei = -IT) in grades 5 to 11,
-   *   holes K and M in grades 5 to 8, N in grades 5 to 11 and P to ZC in
+   *   holes JS in grades 5 to 11 (ES = +IT/2, EI = -IT/2, rounded as js),
+   *   K and M in grades 5 to 8, N in grades 5 to 11 and P to ZC in
    *   grades 5 to 11 (ES = the fundamental deviation, EI = ES - IT), by
    *   ISO 286-1's rules for holes: ES = -ei of the shaft of the same
    *   letter, plus Delta = IT_n - IT_(n-1) for K, M, N up to IT8 and P to
@@ -25,19 +29,19 @@ namespace coaxfit
    */
   struct IsoFit
   {
-    std::string name; ///< normalized, e.g. "H7/s6"
-    int         hole_upper, hole_lower;
-    int         shaft_upper, shaft_lower;
+    std::string name;                     ///< normalized, e.g. "H7/s6"
+    double      hole_upper, hole_lower;   ///< half micrometres for JS5, JS6
+    double      shaft_upper, shaft_lower; ///< half micrometres for js5, js6
 
     /** The largest interference es - EI (micrometres). */
-    int
+    double
     max_interference() const
     {
       return shaft_upper - hole_lower;
     }
 
     /** The smallest interference ei - ES (micrometres; < 0: clearance). */
-    int
+    double
     min_interference() const
     {
       return shaft_lower - hole_upper;
@@ -60,7 +64,8 @@ namespace coaxfit
    * The interference and transition fits a design may choose from at the
    * nominal @p diameter (over 1 up to 500 mm; none outside): shaft grades
    * IT5 to IT8 with the hole one grade coarser or equal, hole basis (H with
-   * k, m, n, p to zc) and shaft basis (h with K, M, N, P to ZC), each class
+   * js, k, m, n, p to zc) and shaft basis (h with JS, K, M, N, P to ZC), each
+   * class
    * only in the grades ISO 286-2 tabulates it and where it is defined at
    * this diameter.
    */

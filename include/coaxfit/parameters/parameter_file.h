@@ -19,6 +19,15 @@ namespace coaxfit
    */
   std::vector<std::string>
   check_parameter_file(const std::string &filename);
+
+  /**
+   * The subsection path open at line @p line (counted from 1) of the .prm
+   * file @p filename, joined with '/' ("Material/Hub"); empty at the top
+   * level or if the file cannot be read. deal.II's messages about a line
+   * name the entry without its subsection: this completes them.
+   */
+  std::string
+  subsection_at_line(const std::string &filename, unsigned int line);
 } // namespace coaxfit
 
 #endif

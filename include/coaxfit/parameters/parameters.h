@@ -39,6 +39,8 @@ namespace coaxfit
     std::string kind_text = "auto";       ///< the entry Kind as given
     /** The kind in use: Kind, or for auto the library's (metal if none). */
     MaterialKind kind = MaterialKind::metal;
+    /** The library's group of the Name, for the friction coefficient. */
+    MaterialFamily family = MaterialFamily::unknown;
     /** Whether E was given in the file (not filled in from the Name). */
     bool E_given = true;
 

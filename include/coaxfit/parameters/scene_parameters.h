@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <coaxfit/parameters/friction.h>
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -117,17 +119,22 @@ namespace coaxfit
   /** Subsection `Design`: what the joint must carry and how it slips. */
   struct DesignParameters
   {
-    DesignMode mode                          = DesignMode::check;
-    double     application_factor            = 1.; ///< K_A, on the loads
-    double     friction_coefficient          = 0.12;
-    double     press_in_friction_coefficient = 0.08;
-    double     required_torque               = 0.; ///< N m; 0: none
-    double     required_axial_force          = 0.; ///< N; 0: none
-    double     slip_safety     = 1.;   ///< required against slip (verdict)
-    double     yield_safety    = 1.;   ///< required against yield (verdict)
-    double     fracture_safety = 2.;   ///< required of a brittle hub (verdict)
-    double     edge_distance   = 0.;   ///< mm; 0: 5 % of l_F
-    bool       corner_trend    = true; ///< solve once more, one level coarser
+    DesignMode mode               = DesignMode::check;
+    double     application_factor = 1.; ///< K_A, on the loads
+    /** `Friction coefficient` as given: auto or a number. */
+    std::string   friction_text        = "auto";
+    std::string   joining_text         = "shrink"; ///< `Joining` as given
+    JoiningMethod joining              = JoiningMethod::shrink;
+    double        friction_coefficient = 0.15; ///< in use, after resolve
+    std::string   friction_source;             ///< where it comes from
+    double        press_in_friction_coefficient = 0.08;
+    double        required_torque               = 0.; ///< N m; 0: none
+    double        required_axial_force          = 0.; ///< N; 0: none
+    double        slip_safety     = 1.; ///< required against slip (verdict)
+    double        yield_safety    = 1.; ///< required against yield (verdict)
+    double        fracture_safety = 2.; ///< required of a brittle hub (verdict)
+    double        edge_distance   = 0.; ///< mm; 0: 5 % of l_F
+    bool          corner_trend = true;  ///< solve once more, one level coarser
 
     void
     declare_parameters(ParameterHandler &prm);
@@ -138,6 +145,14 @@ namespace coaxfit
      */
     void
     validate() const;
+
+    /**
+     * Decide the coefficient of friction in use: the number given, or for
+     * auto DIN 7190-1's for the pairing of @p shaft and @p hub and the
+     * Joining; InputError names the entry.
+     */
+    void
+    resolve_friction(MaterialFamily shaft, MaterialFamily hub);
 
     /** The edge distance in use for a joint of length @p joint_length. */
     double

@@ -1,0 +1,51 @@
+#ifndef coaxfit_section_file_h
+#define coaxfit_section_file_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+
+#include <map>
+#include <string>
+
+namespace coaxfit
+{
+  using namespace dealii;
+
+  /**
+   * Read the section of a body from the gmsh file @p filename into
+   * @p triangulation (which must be empty) and return the boundary id of
+   * every named physical curve, so that loads can refer to faces by name.
+   *
+   * <h3>The file</h3>
+   * - Coordinates: gmsh's x is the radius r >= 0 and its y the axial
+   *   position z, in mm (as in coaxfit's meshes and VTU output: x = r,
+   *   y = z); its z must be 0.
+   * - A `.msh` file is read as it is; a `.geo` file is meshed in 2D with
+   *   the sizes it sets itself, recombined into quadrilaterals
+   *   (frontal-Delaunay and Blossom unless the file chooses otherwise). A
+   *   mesh with any element that is not a first-order quadrilateral is
+   *   refused.
+   * - Physical curves give the boundary ids by name: `joint` gets
+   *   BoundaryId::joint, `axis` BoundaryId::axis, every other name a new id
+   *   from SectionId::first_named on, in the order of the groups' tags. A
+   *   boundary face on no physical curve is BoundaryId::axis on r = 0 and
+   *   SectionId::free elsewhere. A file without a `joint` curve is refused.
+   * - Curves of a `.geo` that are circle arcs get a PolarManifold<2> about
+   *   their centre (manifold ids from SectionId::first_arc), so that global
+   *   refinement keeps new vertices on them; a `.msh` file holds no
+   *   geometry, its curves are refined as straight faces.
+   *
+   * Then the mesh is refined @p global_refinements times.
+   *
+   * @throws InputError "parameter @p entry = '@p filename': ..." if the
+   * file does not exist, gmsh cannot read or mesh it, or it breaks a rule
+   * above.
+   */
+  std::map<std::string, types::boundary_id>
+  read_section_file(Triangulation<2>  &triangulation,
+                    const std::string &filename,
+                    const std::string &entry,
+                    unsigned int       global_refinements = 0);
+} // namespace coaxfit
+
+#endif

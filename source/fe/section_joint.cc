@@ -1,0 +1,153 @@
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/fe/section_joint.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** "(z, D)" of the (r, z) point @p p, for messages. */
+    std::string
+    drawing_point(const Point<2> &p)
+    {
+      std::ostringstream s;
+      s << "(z " << p[1] << ", D " << 2. * p[0] << ")";
+      return s.str();
+    }
+
+    /** 2D cross product a x b. */
+    double
+    cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+    {
+      return a[0] * b[1] - a[1] * b[0];
+    }
+
+    /**
+     * Whether @p p lies inside the polygon of @p outline's straight and arc
+     * edges (by the crossings of a ray in +r, arcs taken as their chords
+     * plus the segment's bulge test), and its distance to the boundary.
+     */
+    bool
+    inside(const SectionOutline &outline, const Point<2> &p, double &distance)
+    {
+      distance = std::numeric_limits<double>::max();
+      bool in  = false;
+      for (const OutlineEdge &e : outline.edges())
+        {
+          double d = 0.;
+          e.parameter_of(p, &d);
+          distance = std::min(distance, d);
+          // Sample arcs finely enough for the crossing test: the chord of
+          // each of 16 parts.
+          const unsigned int parts = e.is_arc() ? 16 : 1;
+          for (unsigned int k = 0; k < parts; ++k)
+            {
+              const Point<2> a = e.point_at(double(k) / parts);
+              const Point<2> b = e.point_at(double(k + 1) / parts);
+              if ((a[1] > p[1]) != (b[1] > p[1]))
+                {
+                  const double r
+                    = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+                  if (r > p[0])
+                    in = !in;
+                }
+            }
+        }
+      return in;
+    }
+
+    [[noreturn]] void
+    refuse(const SectionOutline &inner,
+           const SectionOutline &outer,
+           const std::string    &why)
+    {
+      throw InputError("parameters " + inner.entry() + " and " + outer.entry()
+                       + ": " + why);
+    }
+  } // namespace
+
+
+
+  std::vector<JointPiece>
+  find_joint(const SectionOutline &inner, const SectionOutline &outer)
+  {
+    const double tolerance = 1e-6 * std::max(inner.extent(), outer.extent());
+
+    // Overlap: a corner of one inside the other, away from its boundary.
+    for (const auto &[a, b] :
+         {std::make_pair(&inner, &outer), std::make_pair(&outer, &inner)})
+      for (unsigned int i = 0; i < a->corners().size(); ++i)
+        {
+          double         distance = 0.;
+          const Point<2> p        = a->corner_point(i);
+          if (inside(*b, p, distance) && distance > tolerance)
+            {
+              std::ostringstream s;
+              s << "the sections overlap: the corner " << drawing_point(p)
+                << " of " << a->entry() << " lies " << distance << " mm inside "
+                << b->entry()
+                << "; allowed: sections that touch (drawn at the nominal "
+                   "size; the interference is given in Fit)";
+              refuse(inner, outer, s.str());
+            }
+        }
+
+    std::vector<JointPiece> pieces;
+    for (const OutlineEdge &e : inner.edges())
+      for (const OutlineEdge &f : outer.edges())
+        {
+          if (e.is_arc() || f.is_arc())
+            continue;
+          const Tensor<1, 2> de = e.end - e.start, df = f.end - f.start;
+          const double       le = de.norm(), lf = df.norm();
+          // Two edges that cross properly: the sections overlap.
+          const double denominator = cross(de, df);
+          if (std::abs(denominator) > 1e-12 * le * lf)
+            {
+              const double t = cross(f.start - e.start, df) / denominator;
+              const double u = cross(f.start - e.start, de) / denominator;
+              if (t * le > tolerance && (1. - t) * le > tolerance
+                  && u * lf > tolerance && (1. - u) * lf > tolerance)
+                refuse(inner,
+                       outer,
+                       "the sections overlap: their edges cross at "
+                         + drawing_point(e.start + t * de)
+                         + "; allowed: sections that touch (drawn at the "
+                           "nominal size; the interference is given in "
+                           "Fit)");
+              continue;
+            }
+          // Collinear, opposite directions (both counter-clockwise: the
+          // sections on opposite sides of the line).
+          const Tensor<1, 2> unit = de / le;
+          const double off_start  = std::abs(cross(unit, f.start - e.start));
+          const double off_end    = std::abs(cross(unit, f.end - e.start));
+          if (off_start > tolerance || off_end > tolerance || de * df >= 0.)
+            continue;
+          const double s0 = std::max(0., (f.end - e.start) * unit);
+          const double s1 = std::min(le, (f.start - e.start) * unit);
+          if (s1 - s0 <= tolerance)
+            continue;
+          JointPiece piece;
+          piece.start = e.start + s0 * unit;
+          piece.end   = e.start + s1 * unit;
+          // Counter-clockwise: the section lies to the left; outward is
+          // the direction turned clockwise.
+          piece.normal[0] = unit[1];
+          piece.normal[1] = -unit[0];
+          pieces.push_back(piece);
+        }
+    if (pieces.empty())
+      refuse(inner,
+             outer,
+             "the sections do not meet: no straight edge of one lies on a "
+             "straight edge of the other; allowed: sections that touch "
+             "along a line (drawn at the nominal joint diameter, the "
+             "interference given in Fit)");
+    return pieces;
+  }
+} // namespace coaxfit

@@ -219,6 +219,18 @@ main()
   run("friction_malformed",
       file_with("friction_malformed",
                 "subsection Design\n  set Friction coefficient = 0.1x\nend\n"));
+  run(
+    "friction_auto_misspelt",
+    file_with("friction_auto_misspelt",
+              "subsection Design\n  set Friction coefficient = autox\nend\n"));
+  run(
+    "friction_hexadecimal",
+    file_with("friction_hexadecimal",
+              "subsection Design\n  set Friction coefficient = 0x0.2\nend\n"));
+  run("entry_misspelt",
+      file_with("entry_misspelt",
+                "subsection Material\n subsection Hub\n  set Yeld strength = "
+                "300\n end\nend\n"));
   run("joining_unknown",
       file_with("joining_unknown",
                 "subsection Design\n  set Joining = glue\nend\n"));

@@ -232,7 +232,20 @@ namespace coaxfit
       return;
     const Material &hub = parameters.hub, &shaft = parameters.shaft;
     if (!(hub.thermal_expansion > 0.) || !(hub.temperature_limit > 0.))
-      return; // heating without a known limit: any fit
+      {
+        // Heating without a known limit: any fit.
+        notes.push_back(
+          std::string("joining by temperature is not judged: Material/Hub "
+                      "has no ")
+          + (hub.thermal_expansion > 0. ? "Temperature limit" :
+                                          "Thermal expansion")
+          + " (a Name from the library gives it)");
+        return;
+      }
+    if (!(shaft.cooling_expansion > 0.) && shaft.thermal_expansion > 0.)
+      notes.push_back("the shaft is cooled with its heating coefficient "
+                      "(Material/Shaft/Cooling expansion not given): its "
+                      "share of the joining opening is too large");
     const double heating = hub.thermal_expansion
                            * (hub.temperature_limit - o.assembly_temperature);
     const double cooling
@@ -247,39 +260,37 @@ namespace coaxfit
   void
   FitSelection::note_fits()
   {
-    if (!found())
-      return;
-    unsigned int not_joinable = 0, outside_din = 0;
-    for (const IsoFit &f : fits)
-      {
-        not_joinable += joinable(f) ? 0 : 1;
-        outside_din += inside_din_band(f) ? 0 : 1;
-      }
     std::ostringstream text;
     text << std::setprecision(4);
-    if (not_joinable > 0)
+    if (!unjoinable.empty())
       {
-        text << not_joinable << " of the " << fits.size()
-             << " fits cannot be joined by temperature (the hub at its "
-                "limit and the shaft at -196 C open "
+        const std::size_t n = unjoinable.size();
+        text << n << " of the " << n + fits.size()
+             << " fits inside the band cannot be joined by temperature and "
+                "are left out (the hub at its limit and the shaft at -196 C "
+                "open "
              << joining_opening
-             << " mm, less than U_max plus the joining "
-                "clearance "
-             << joining_clearance
-             << " mm): ranked last, joinable 'no'; they need pressure oil "
-                "or a press";
+             << " mm, less than their U_max plus the joining clearance "
+             << joining_clearance << " mm; e.g. " << unjoinable.front().name
+             << "): joined by pressure oil or pressed in, a fit would need "
+                "the friction of that method (Design/Joining)";
         notes.push_back(text.str());
         text.str("");
       }
+    unsigned int outside_din = 0;
+    for (const IsoFit &f : fits)
+      outside_din += inside_din_band(f) ? 0 : 1;
     if (outside_din > 0)
       {
-        text << outside_din << " of the " << fits.size()
-             << " fits lie outside DIN 7190's band [" << least_din.U << ", "
-             << largest_din.U
-             << "] mm (DIN 7190 'no'): the finite elements accept them, the "
-                "plain-cylinder formulas do not";
+        text << outside_din << " of the " << fits.size() << " fit"
+             << (fits.size() == 1 ? "" : "s") << " lie"
+             << (outside_din == 1 ? "s" : "") << " outside DIN 7190's band ["
+             << least_din.U << ", " << largest_din.U
+             << "] mm (DIN 7190 'no'): the finite elements accept "
+             << (outside_din == 1 ? "it" : "them")
+             << ", the plain-cylinder formulas do not";
         if (!inside_din_band(fits.front()))
-          text << "; the first of them is " << fits.front().name;
+          text << "; the first fit " << fits.front().name << " is one";
         notes.push_back(text.str());
       }
   }
@@ -631,10 +642,11 @@ namespace coaxfit
     fits.clear();
     if (!(least.U <= largest.U))
       return;
+    unjoinable.clear();
     for (const IsoFit &f : candidate_fits(diameter))
       if (1e-3 * f.min_interference() >= least.U
           && 1e-3 * f.max_interference() <= largest.U)
-        fits.push_back(f);
+        (joinable(f) ? fits : unjoinable).push_back(f);
     const double centre = 0.5 * (least.U + largest.U);
     const auto   offset = [centre](const IsoFit &f) {
       return std::abs(0.5e-3 * (f.min_interference() + f.max_interference())
@@ -642,8 +654,6 @@ namespace coaxfit
     };
     std::stable_sort(
       fits.begin(), fits.end(), [&](const IsoFit &a, const IsoFit &b) {
-        if (joinable(a) != joinable(b))
-          return joinable(a);
         const bool pa = is_preferred_fit(a.name), pb = is_preferred_fit(b.name);
         if (pa != pb)
           return pa;
@@ -694,6 +704,16 @@ namespace coaxfit
            << least.state << ") > U_max " << largest.U << " mm ("
            << largest.criterion << " " << largest.state
            << "): no interference both carries the loads and is borne";
+    else if (!unjoinable.empty())
+      text << "the " << unjoinable.size() << " ISO 286 fits inside U_min "
+           << least.U << " to U_max " << largest.U
+           << " mm cannot be joined by temperature (the hub at its limit "
+              "and the shaft at -196 C open "
+           << joining_opening << " mm; " << unjoinable.front().name << " needs "
+           << 1e-3 * unjoinable.front().max_interference()
+           << " mm plus the joining clearance " << joining_clearance
+           << " mm): join by pressure oil or a press (Design/Joining, with "
+              "its friction) or choose a hub that can be heated further";
     else if (candidate_fits(diameter).empty())
       text << "no ISO 286 fit at D_F = " << diameter
            << " mm (covered: over 1 up to 500 mm) for the band " << least.U
@@ -740,19 +760,18 @@ namespace coaxfit
     if (found())
       {
         s << "    fits inside [U_min, U_max]: " << fits.size()
-          << " (ranked: joinable first, then ISO 286-1's preferred, then "
-             "the widest tolerances, then the best centred)\n"
+          << " (ranked: ISO 286-1's preferred first, then the widest "
+             "tolerances, then the best centred)\n"
           << "    " << std::left << std::setw(6) << "rank" << std::setw(10)
           << "fit" << std::right << std::setw(14) << "U_min (um)"
           << std::setw(14) << "U_max (um)"
-          << "  preferred  joinable  DIN 7190\n";
+          << "  preferred  DIN 7190\n";
         for (unsigned int i = 0; i < fits.size() && i < max_fits; ++i)
           s << "    " << std::left << std::setw(6) << i + 1 << std::setw(10)
             << fits[i].name << std::right << std::setw(14)
             << fits[i].min_interference() << std::setw(14)
             << fits[i].max_interference() << "  " << std::left << std::setw(11)
-            << (is_preferred_fit(fits[i].name) ? "yes" : "no") << std::setw(10)
-            << joinable_text(fits[i])
+            << (is_preferred_fit(fits[i].name) ? "yes" : "no")
             << (inside_din_band(fits[i]) ? "yes" : "no") << std::right << '\n';
         if (fits.size() > max_fits)
           s << "    (" << fits.size() - max_fits
@@ -797,17 +816,16 @@ namespace coaxfit
       out << "Note: " << n << ".\n\n";
     if (found())
       {
-        out << "Fits inside [U_min, U_max], ranked (joinable first, then "
-               "ISO 286-1's preferred, then the widest tolerances, then the "
-               "best centred; DIN 7190: inside DIN 7190's band):\n\n| rank "
-               "| fit | U_min (um) | U_max (um) | preferred | joinable | "
-               "DIN 7190 |\n|---:|---|---:|---:|---|---|---|\n";
+        out << "Fits inside [U_min, U_max], ranked (ISO 286-1's preferred "
+               "first, then the widest tolerances, then the best centred; "
+               "DIN 7190: inside DIN 7190's band):\n\n| rank | fit | U_min "
+               "(um) | U_max (um) | preferred | DIN 7190 |\n|---:|---|---:|"
+               "---:|---|---|\n";
         for (unsigned int i = 0; i < fits.size(); ++i)
           out << "| " << i + 1 << " | " << fits[i].name << " | "
               << fits[i].min_interference() << " | "
               << fits[i].max_interference() << " | "
               << (is_preferred_fit(fits[i].name) ? "yes" : "no") << " | "
-              << joinable_text(fits[i]) << " | "
               << (inside_din_band(fits[i]) ? "yes" : "no") << " |\n";
         out << '\n';
       }

@@ -281,7 +281,10 @@ namespace coaxfit
   OperationAnalysis::warnings(const Parameters &parameters) const
   {
     std::vector<std::string> list;
-    if (joining_hub_above_limit)
+    const JoiningMethod      joining = parameters.design.joining;
+    if (joining_hub_above_limit
+        && (joining == JoiningMethod::shrink
+            || joining == JoiningMethod::shrink_degreased))
       {
         const Material &hub = parameters.hub;
         std::string     alternative;

@@ -98,8 +98,13 @@ namespace coaxfit
     const bool cooling_ok
       = cooling_known && operation.joining_cooling_reachable;
     const bool both_ok = operation.joining_by_both >= operation.joining_needed;
-    if ((heating_known || cooling_known) && !heating_ok && !cooling_ok
-        && !both_ok)
+    // A joint made by pressure oil or pressed in is not joined by
+    // temperature: its joining temperatures are information only.
+    const bool by_temperature
+      = design.joining == JoiningMethod::shrink
+        || design.joining == JoiningMethod::shrink_degreased;
+    if (by_temperature && (heating_known || cooling_known) && !heating_ok
+        && !cooling_ok && !both_ok)
       failed.push_back(
         "joining temperature not reachable: the hub "
         + (heating_known ? "at " + celsius(operation.joining_temperature_hub)

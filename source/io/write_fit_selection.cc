@@ -45,7 +45,7 @@ namespace coaxfit
       const std::string name = directory + "/fit_selection.csv";
       std::ofstream     csv  = open_result_file(name);
       csv << "rank,fit,system,preferred,ES_um,EI_um,es_um,ei_um,U_min_um,"
-             "U_max_um,joinable,inside_din_band\n";
+             "U_max_um,inside_din_band\n";
       unsigned int rank = 0;
       for (const IsoFit &f : selection.fits)
         csv << ++rank << ',' << f.name << ','
@@ -53,7 +53,6 @@ namespace coaxfit
             << (is_preferred_fit(f.name) ? 1 : 0) << ',' << f.hole_upper << ','
             << f.hole_lower << ',' << f.shaft_upper << ',' << f.shaft_lower
             << ',' << f.min_interference() << ',' << f.max_interference() << ','
-            << (selection.joinable(f) ? 1 : 0) << ','
             << (selection.inside_din_band(f) ? 1 : 0) << '\n';
       close_result_file(csv, name);
       return "fit_selection.csv: the " + std::to_string(selection.fits.size())
@@ -71,14 +70,10 @@ namespace coaxfit
     {
       Json fits = Json::array();
       for (const IsoFit &f : selection.fits)
-        fits.push_back(
-          {{"fit", f.name},
-           {"U_min", f.min_interference() / 1000.},
-           {"U_max", f.max_interference() / 1000.},
-           {"joinable",
-            selection.joining_assessed() ? Json(selection.joinable(f)) :
-                                           Json(nullptr)},
-           {"inside_din_band", selection.inside_din_band(f)}});
+        fits.push_back({{"fit", f.name},
+                        {"U_min", f.min_interference() / 1000.},
+                        {"U_max", f.max_interference() / 1000.},
+                        {"inside_din_band", selection.inside_din_band(f)}});
       Json checks = Json::array();
       for (const FitSelection::Check &c : selection.checks)
         checks.push_back(

@@ -82,19 +82,29 @@ namespace coaxfit
         + to_string(shaft) + " (shaft) on " + to_string(hub)
         + " (hub); allowed is a number from 1e-6 to 1 (the value of your "
           "tests)");
-    const std::string pairing = "DIN 7190-1, steel on " + to_string(b);
-    // DIN 7190-1 (2017), coefficients of friction against slip of
-    // transverse press fits: steel-steel by pressure oil 0.12 (degreased,
-    // joined with glycerine 0.18), by shrinking 0.15 (degreased 0.20);
+    const std::string pairing = "DIN 7190, steel on " + to_string(b);
+    // DIN 7190, coefficients of friction against slip of transverse
+    // press fits: steel-steel by pressure oil 0.12 (degreased, joined with
+    // glycerine 0.18), shrunk 0.14 (DIN 7190:2001; DIN 7190-1:2017 is
+    // reproduced with 0.15: the lower is taken), degreased 0.20;
     // steel-cast iron by pressure oil 0.10 (degreased 0.16); steel-MgAl
     // dry 0.10 to 0.15; steel-CuZn dry 0.17 to 0.25.
+    const bool degreased = method == JoiningMethod::shrink_degreased
+                           || method == JoiningMethod::pressure_oil_degreased;
+    const bool oiled = method == JoiningMethod::pressure_oil
+                       || method == JoiningMethod::pressure_oil_degreased
+                       || method == JoiningMethod::press;
     switch (b)
       {
         case MaterialFamily::steel:
           switch (method)
             {
               case JoiningMethod::shrink:
-                return {0.15, pairing + ", shrink fit" + assumed};
+                return {0.14,
+                        pairing
+                          + ", shrink fit (0.14 of the 2001 edition, "
+                            "the lower of the editions)"
+                          + assumed};
               case JoiningMethod::shrink_degreased:
                 return {0.20, pairing + ", shrink fit, degreased" + assumed};
               case JoiningMethod::pressure_oil:
@@ -108,31 +118,37 @@ namespace coaxfit
                             "the pressure oil fit"
                           + assumed};
             }
-          case MaterialFamily::cast_iron: {
-            const bool degreased
-              = method == JoiningMethod::shrink_degreased
-                || method == JoiningMethod::pressure_oil_degreased;
-            const bool oil = method == JoiningMethod::pressure_oil
-                             || method == JoiningMethod::pressure_oil_degreased;
-            return {degreased ? 0.16 : 0.10,
-                    pairing + (degreased ? ", degreased" : "")
-                      + (oil ? ", pressure oil" :
-                               ", the pressure oil value (the standard "
-                               "gives none for this joining)")
-                      + assumed};
+        case MaterialFamily::cast_iron:
+          return {degreased ? 0.16 : 0.10,
+                  pairing + (degreased ? ", degreased" : "")
+                    + (method == JoiningMethod::pressure_oil
+                           || method == JoiningMethod::pressure_oil_degreased ?
+                         ", pressure oil" :
+                         ", the pressure oil value (the standard gives none "
+                         "for this joining)")
+                    + assumed};
+          default: {
+            // Dry values only: a joint joined oiled (pressure oil, pressed
+            // in) takes the lower of the dry value and steel on steel's
+            // oiled one (0.12, degreased 0.18).
+            const bool        light = b == MaterialFamily::light_alloy;
+            const double      dry   = light ? 0.10 : 0.17;
+            const double      oil   = degreased ? 0.18 : 0.12;
+            const std::string dry_text
+              = light ? ", dry, lower end of 0.10 to 0.15" :
+                        ", the dry value of brass (CuZn), lower end of 0.17 "
+                        "to 0.25";
+            if (oiled && oil < dry)
+              return {oil,
+                      pairing
+                        + std::string(", joined oiled: steel on steel's "
+                                      "oiled value, ")
+                        + (degreased ? "0.18" : "0.12")
+                        + ", below the dry value (the standard gives only "
+                          "the dry value 0.17 to 0.25 of brass)"
+                        + assumed};
+            return {dry, pairing + dry_text + assumed};
           }
-        case MaterialFamily::light_alloy:
-          return {0.10,
-                  pairing
-                    + ", dry, lower end of 0.10 to 0.15 (one value "
-                      "for every joining)"
-                    + assumed};
-        default:
-          return {0.17,
-                  pairing
-                    + ", the dry value of brass (CuZn), lower end of "
-                      "0.17 to 0.25 (one value for every joining)"
-                    + assumed};
       }
   }
 } // namespace coaxfit

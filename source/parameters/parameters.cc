@@ -1254,19 +1254,24 @@ namespace coaxfit
         const std::size_t at      = message.find("Line <");
         const std::size_t of      = message.find("> of file <");
         const std::size_t named   = message.find("for the entry named ");
+        const std::string current = "in the current subsection";
+        const std::size_t where   = message.find(current);
         if (at != std::string::npos && of != std::string::npos
-            && named != std::string::npos)
+            && (named != std::string::npos || where != std::string::npos))
           {
             const std::size_t file_end = message.find('>', of + 11);
             const std::string file
               = message.substr(of + 11, file_end - of - 11);
             const std::string section = subsection_at_line(
               file, std::stoi(message.substr(at + 6, of - at - 6)));
-            const std::size_t entry     = named + 20;
-            const std::size_t entry_end = message.find(' ', entry);
-            if (!section.empty() && entry_end != std::string::npos)
-              message = message.substr(0, entry) + section + "/"
-                        + message.substr(entry);
+            if (!section.empty() && named != std::string::npos)
+              message = message.substr(0, named + 20) + section + "/"
+                        + message.substr(named + 20);
+            else if (where != std::string::npos)
+              message.replace(where,
+                              current.size(),
+                              section.empty() ? "at the top level" :
+                                                "in subsection " + section);
           }
         throw InputError(message.find("of file <") != std::string::npos ?
                            message :

@@ -150,6 +150,20 @@ namespace coaxfit
     if (!missing.empty())
       return; // read_parameters() names what is missing
     p.design.resolve_friction(p.shaft.family, p.hub.family);
+    // auto takes a material without a Name as steel: say so where its E
+    // is not a steel's.
+    if (p.design.friction_source.find("taken as steel") != std::string::npos)
+      for (const auto &[m, path] :
+           {std::make_pair(&p.shaft, "Shaft"), std::make_pair(&p.hub, "Hub")})
+        if (m->family == MaterialFamily::unknown
+            && !(m->E >= 180000. && m->E <= 240000.))
+          p.read_notes.push_back(
+            "Material/" + std::string(path)
+            + " has no Name and E = " + number(m->E)
+            + " MPa, not a steel's: Design/Friction coefficient = auto took "
+              "it as steel ("
+            + number(p.design.friction_coefficient)
+            + "); give its Name or the coefficient");
     p.drawing.validate();
     // A selection chooses the fit: Fit/ISO fit and Fit/Case are not used
     // (the interference given only starts its solves when DIN 7190's ends

@@ -151,9 +151,12 @@ namespace coaxfit
                       true);
     prm.add_parameter("ISO fit",
                       iso_fit,
-                      "A hole-basis fit of ISO 286 such as H7/s6 (holes H5 "
-                      "to H11, shafts m to zc in grades 5 to 11, joint "
-                      "diameters over 1 up to 500 mm). When given it "
+                      "An interference or transition fit of ISO 286: hole "
+                      "basis such as H7/s6 (holes H5 to H11 with shafts js, "
+                      "k to zc in grades 5 to 11) or shaft basis such as "
+                      "S7/h6 (shafts h5 to h11 with holes JS5 to JS11, K5 "
+                      "to K8, M5 to M8, N5 to N11, P to ZC 5 to 11); joint "
+                      "diameters over 1 up to 500 mm. When given it "
                       "decides the interference: U_min = ei - ES, U_max = "
                       "es - EI at the joint diameter, and Case chooses "
                       "which. Empty: Diametral interference is used.",
@@ -228,7 +231,7 @@ namespace coaxfit
                       "slip (DIN 7190's nu_r), for the transmissible torque "
                       "and axial force. auto: DIN 7190-1's value for the "
                       "pairing of the Material Names and the Joining: "
-                      "steel on steel 0.15 shrunk (degreased 0.20), 0.12 "
+                      "steel on steel 0.14 shrunk (degreased 0.20), 0.12 "
                       "by pressure oil (degreased 0.18); steel on cast iron "
                       "0.10 (degreased 0.16); steel on light alloys 0.10; "
                       "steel on copper alloys 0.17 (the lower ends of the "
@@ -246,7 +249,11 @@ namespace coaxfit
                       "mineral oil), pressure oil degreased (joined with "
                       "glycerine), press (pressed in lengthwise; DIN "
                       "7190-1's oiled pressure oil value). The joining "
-                      "temperatures are printed for every method.",
+                      "temperatures are printed for every method; only a "
+                      "shrink fit is judged by them (the verdict, and in "
+                      "select mode the fits that cannot be joined by "
+                      "heating the hub to its Temperature limit and "
+                      "cooling the shaft to -196 C are left out).",
                       Patterns::Selection(joining_method_names()));
     prm.add_action("Joining", [this](const std::string &value) {
       joining = joining_method(value);
@@ -320,25 +327,30 @@ namespace coaxfit
   DesignParameters::resolve_friction(const MaterialFamily shaft,
                                      const MaterialFamily hub)
   {
-    const auto first = friction_text.find_first_not_of(" \t");
-    if (first == std::string::npos
-        || friction_text.compare(first, 4, "auto") == 0)
+    const auto        first = friction_text.find_first_not_of(" \t");
+    const auto        last  = friction_text.find_last_not_of(" \t");
+    const std::string text  = first == std::string::npos ?
+                                "" :
+                                friction_text.substr(first, last + 1 - first);
+    if (text == "auto")
       {
         const FrictionValue value = din7190_friction(shaft, hub, joining);
         friction_coefficient      = value.coefficient;
         friction_source           = value.source;
         return;
       }
+    // A plain decimal number (no hexadecimal, no words).
     std::size_t end = 0;
     double      mu  = std::numeric_limits<double>::quiet_NaN();
-    try
-      {
-        mu = std::stod(friction_text, &end);
-      }
-    catch (const std::exception &)
-      {}
-    if (!(mu >= 1e-6 && mu <= 1.)
-        || friction_text.find_first_not_of(" \t", end) != std::string::npos)
+    if (!text.empty()
+        && text.find_first_not_of("0123456789.eE+-") == std::string::npos)
+      try
+        {
+          mu = std::stod(text, &end);
+        }
+      catch (const std::exception &)
+        {}
+    if (!(mu >= 1e-6 && mu <= 1.) || end != text.size())
       throw InputError("parameter Design/Friction coefficient = '"
                        + friction_text
                        + "' is not allowed: allowed is auto or a number "

@@ -48,12 +48,17 @@ namespace coaxfit
    * is exact; the yield end is the root of the equivalent stress at the
    * check points, found by bisection of the closed form.
    *
-   * Ranking of the fits: those that can be joined (joinable()) first,
-   * then the preferred fits of ISO 286-1, then the widest tolerances (IT
-   * of hole plus IT of shaft, the interference band es - ei + ES - EI),
-   * then the band best centred in [U_min, U_max]. Each fit is also marked
-   * whether its band lies inside DIN 7190's [U_min_din, U_max_din]: the
-   * finite elements may accept a fit the plain-cylinder formulas do not.
+   * A shrink fit (Design/Joining) must also be joinable(): the fits inside
+   * the band that cannot be joined by temperature are left out (counted in
+   * `unjoinable`, named in a note), since another joining method would
+   * change the friction and with it U_min.
+   *
+   * Ranking of the fits: the preferred fits of ISO 286-1 first, then the
+   * widest tolerances (IT of hole plus IT of shaft, the interference band
+   * es - ei + ES - EI), then the band best centred in [U_min, U_max]. Each fit
+   * is also marked whether its band lies inside DIN 7190's [U_min_din,
+   * U_max_din]: the finite elements may accept a fit the plain-cylinder
+   * formulas do not.
    */
   class FitSelection
   {
@@ -94,12 +99,13 @@ namespace coaxfit
 
     End                      least, largest;         ///< FE: U_min, U_max
     End                      least_din, largest_din; ///< DIN 7190
-    std::vector<IsoFit>      fits;                ///< ranked, inside the band
-    std::vector<Check>       checks;              ///< each end, each state
-    std::vector<std::string> notes;               ///< contact zone, corrections
-    unsigned int             n_solves = 0;        ///< FE solves in all
-    double                   diameter = 0.;       ///< D_F (mm)
-    DesignParameters         design;              ///< the loads and safeties
+    std::vector<IsoFit>      fits;          ///< ranked, inside the band
+    std::vector<IsoFit>      unjoinable;    ///< inside, but not joinable()
+    std::vector<Check>       checks;        ///< each end, each state
+    std::vector<std::string> notes;         ///< contact zone, corrections
+    unsigned int             n_solves = 0;  ///< FE solves in all
+    double                   diameter = 0.; ///< D_F (mm)
+    DesignParameters         design;        ///< the loads and safeties
     bool                     brittle_hub = false; ///< fracture, not yield
 
     /**
@@ -125,20 +131,12 @@ namespace coaxfit
 
     /**
      * Whether joining by temperature was assessed (joining_opening is
-     * finite); if not, joinable() is true for every fit and the tables
-     * print "-" for it.
+     * finite); if not, joinable() is true for every fit.
      */
     bool
     joining_assessed() const
     {
       return std::isfinite(joining_opening);
-    }
-
-    /** "yes", "no", or "-" where joining was not assessed. */
-    std::string
-    joinable_text(const IsoFit &fit) const
-    {
-      return !joining_assessed() ? "-" : joinable(fit) ? "yes" : "no";
     }
 
     /** Whether the band of @p fit lies inside DIN 7190's [U_min, U_max]. */

@@ -41,12 +41,16 @@ namespace coaxfit
   void
   BodyDiscretization::setup_system()
   {
-    make_body_mesh(triangulation, body_geometry);
+    if (mesh_builder)
+      mesh_builder(triangulation);
+    else
+      make_body_mesh(triangulation, body_geometry);
     dof_handler.distribute_dofs(fe);
 
     constraints.clear();
     const FEValuesExtractors::Scalar u_r(0), u_z(1);
-    if (body_geometry.r_inner == 0.)
+    // A section's mesh carries the axis id where it touches r = 0.
+    if (body_geometry.r_inner == 0. || mesh_builder)
       VectorTools::interpolate_boundary_values(dof_handler,
                                                BoundaryId::axis,
                                                Functions::ZeroFunction<2>(2),

@@ -12,6 +12,7 @@
 #include <coaxfit/fe/mesh.h>
 #include <coaxfit/parameters/parameters.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -74,6 +75,26 @@ namespace coaxfit
                        unsigned int        degree,
                        bool            reduced_volumetric_integration = false,
                        const BodyLoad &load = BodyLoad());
+
+    /**
+     * Builds a body's mesh into an empty triangulation, its boundary tagged
+     * with the ids of BoundaryId (at least the joint; the axis where the
+     * section touches r = 0; the symmetry plane of a half model).
+     */
+    using MeshBuilder = std::function<void(Triangulation<2> &)>;
+
+    /**
+     * Build the mesh with @p builder instead of the plain cylinder of the
+     * geometry (make_body_mesh): a section meshed by make_section_mesh or
+     * read from a gmsh file. Before setup_system(). The conditions stay
+     * those of the ids: u_r = 0 on BoundaryId::axis, u_z = 0 on
+     * BoundaryId::symmetry, wherever the mesh has them.
+     */
+    void
+    set_mesh_builder(const MeshBuilder &builder)
+    {
+      mesh_builder = builder;
+    }
 
     /** The body's name as the parameter file spells it ("Shaft", "Hub"). */
     const std::string &
@@ -293,6 +314,7 @@ namespace coaxfit
     const Material     body_material;
     const bool         reduced_volumetric_integration;
     BodyLoad           body_load;
+    MeshBuilder        mesh_builder; ///< empty: make_body_mesh
 
     Triangulation<2>          triangulation;
     const FESystem<2>         fe;

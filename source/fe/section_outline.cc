@@ -13,6 +13,36 @@ namespace coaxfit
 {
   namespace
   {
+    /**
+     * @p text for a one-line message: control characters (a line break in
+     * the entry) written as \n, \t or \xHH.
+     */
+    std::string
+    printable(const std::string &text)
+    {
+      std::string out;
+      for (const char c : text)
+        {
+          const unsigned char u = static_cast<unsigned char>(c);
+          if (c == '\n')
+            out += "\\n";
+          else if (c == '\t')
+            out += "\\t";
+          else if (u < 32 || u == 127)
+            {
+              const char *digits = "0123456789abcdef";
+              out += "\\x";
+              out += digits[u / 16];
+              out += digits[u % 16];
+            }
+          else
+            out += c;
+        }
+      return out;
+    }
+
+
+
     constexpr double pi = numbers::PI;
 
     std::string
@@ -289,8 +319,8 @@ namespace coaxfit
     for (unsigned int i = 0; i < points.size(); ++i)
       {
         const std::string where = "parameter " + entry + ": point "
-                                  + std::to_string(i + 1) + " '" + points[i]
-                                  + "'";
+                                  + std::to_string(i + 1) + " '"
+                                  + printable(points[i]) + "'";
         const std::vector<std::string> numbers = split(points[i], ',');
         if (numbers.size() < 2 || numbers.size() > 3)
           throw InputError(where + " has " + std::to_string(numbers.size())
@@ -302,9 +332,13 @@ namespace coaxfit
             const char *begin = numbers[k].c_str();
             char       *end   = nullptr;
             values[k]         = std::strtod(begin, &end);
-            if (numbers[k].empty() || *end != '\0' || !std::isfinite(values[k]))
-              throw InputError(where + ": '" + numbers[k]
-                               + "' is not a finite number" + form);
+            // A plain decimal number (no hexadecimal, inf or nan).
+            const bool decimal = numbers[k].find_first_not_of("0123456789.eE+-")
+                                 == std::string::npos;
+            if (numbers[k].empty() || !decimal || *end != '\0'
+                || !std::isfinite(values[k]))
+              throw InputError(where + ": '" + printable(numbers[k])
+                               + "' is not a finite decimal number" + form);
           }
         OutlineCorner corner;
         corner.z        = values[0];

@@ -15,11 +15,15 @@
 // (e) taper 1:20 on the diameter: shaft cone D 50 at z 0 to D 52 at z 40,
 //     hub bore the same cone: length sqrt(40^2 + 1^2) = 40.0125, normal
 //     (40, -1) / 40.0125 (outward from the shaft, against z).
+// The hubs' outer diameters averaged over the joint (DIN 7190's D_aA of
+// the plain-cylinder estimate): (a), (c), (d), (e) 100; (b) the boss D 80
+// for 20 of the 50 mm, the rim D 180 for 30: 140.
 // Then bad scenes: a hub bore D 52 on the shaft D 50 (no joint), a bore
 // D 48 (overlap by 1 mm in the radius), a hub crossing the shaft's end.
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/section_joint.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -52,6 +56,18 @@ namespace
           }
         std::cout << "  joint length " << std::setprecision(6) << total
                   << " mm\n";
+        const std::vector<JointPiece> joint = find_joint(inner, outer);
+        double                        z0 = joint.front().start[1], z1 = z0;
+        for (const JointPiece &p : joint)
+          for (const double z : {p.start[1], p.end[1]})
+            {
+              z0 = std::min(z0, z);
+              z1 = std::max(z1, z);
+            }
+        if (z1 > z0)
+          std::cout << "  hub outer diameter averaged over z " << z0 << ".."
+                    << z1 << ": " << mean_outer_diameter(outer, z0, z1)
+                    << " mm\n";
       }
     catch (const InputError &e)
       {

@@ -50,6 +50,18 @@ namespace coaxfit
    */
   std::vector<JointPiece>
   find_joint(const SectionOutline &inner, const SectionOutline &outer);
+
+  /**
+   * The outer diameter of @p hub averaged over the axial extent [@p z_start,
+   * @p z_end] of a joint (mm): at each z the largest diameter of the
+   * section there, its mean over z. DIN 7190's plain-cylinder estimate of a
+   * hub that is not a plain cylinder takes it as D_aA (a gear hub of boss
+   * D 80 over a joint z -25..25 with a rim D 180 over z -15..15: (20 x 80
+   * + 30 x 180) / 50 = 140 mm). Exact for straight edges; a fillet arc
+   * counts as 32 chords.
+   */
+  double
+  mean_outer_diameter(const SectionOutline &hub, double z_start, double z_end);
 } // namespace coaxfit
 
 #endif

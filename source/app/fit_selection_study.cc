@@ -4,6 +4,7 @@
 #include <coaxfit/app/fit_selection_study.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/design/fit_selection.h>
+#include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/design/verdict.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/io/result_writers.h>
@@ -75,8 +76,7 @@ namespace coaxfit
     // One case set up once; every state of the selection reuses its
     // meshes and factorizations.
     std::ostringstream quiet;
-    CoaxialFit fit(FitSelection::at_interference(FitSelection::at_assembly(
-                                                   parameters),
+    CoaxialFit fit(FitSelection::at_interference(at_assembly(parameters),
                                                  parameters.fit_limits.used()),
                    quiet,
                    false);

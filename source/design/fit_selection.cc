@@ -183,21 +183,6 @@ namespace coaxfit
 
 
 
-  Parameters
-  FitSelection::at_assembly(const Parameters &parameters)
-  {
-    Parameters p                       = parameters;
-    p.operation.shaft_temperature_text = "";
-    p.operation.hub_temperature_text   = "";
-    p.operation.speed                  = 0.;
-    p.operation.shaft_bore_pressure    = 0.;
-    p.operation.hub_outer_pressure     = 0.;
-    p.design.corner_trend              = false;
-    return p;
-  }
-
-
-
   FitSelection::FitSelection(const Parameters &parameters, const Solve &solve)
     : diameter(parameters.drawing.joint_diameter)
     , design(parameters.design)

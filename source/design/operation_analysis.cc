@@ -22,19 +22,6 @@ namespace coaxfit
       return omega * 60. / (2. * M_PI);
     }
 
-    /** @p parameters at assembly: no load of operation. */
-    Parameters
-    at_assembly(const Parameters &parameters)
-    {
-      Parameters p                       = parameters;
-      p.operation.shaft_temperature_text = "";
-      p.operation.hub_temperature_text   = "";
-      p.operation.speed                  = 0.;
-      p.operation.shaft_bore_pressure    = 0.;
-      p.operation.hub_outer_pressure     = 0.;
-      p.design.corner_trend              = false;
-      return p;
-    }
   } // namespace
 
 
@@ -494,5 +481,20 @@ namespace coaxfit
         table = false;
         out << line << "\n\n";
       }
+  }
+
+
+
+  Parameters
+  at_assembly(const Parameters &parameters)
+  {
+    Parameters p                       = parameters;
+    p.operation.shaft_temperature_text = "";
+    p.operation.hub_temperature_text   = "";
+    p.operation.speed                  = 0.;
+    p.operation.shaft_bore_pressure    = 0.;
+    p.operation.hub_outer_pressure     = 0.;
+    p.design.corner_trend              = false;
+    return p;
   }
 } // namespace coaxfit

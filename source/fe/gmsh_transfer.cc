@@ -4,6 +4,7 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/gmsh_transfer.h>
 #include <coaxfit/fe/mesh.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,18 +17,9 @@ namespace coaxfit
   namespace
   {
     std::string
-    number(const double x)
-    {
-      std::ostringstream text;
-      text.precision(6);
-      text << x;
-      return text.str();
-    }
-
-    std::string
     where(const Point<2> &p)
     {
-      return "(r = " + number(p[0]) + ", z = " + number(p[1]) + ")";
+      return "(r = " + number(p[0], 6) + ", z = " + number(p[1], 6) + ")";
     }
 
     double
@@ -77,11 +69,11 @@ namespace coaxfit
       {
         const Point<2> &p = nodes[node_tags[i]];
         if (p[0] < -tol)
-          throw InputError(context + ": a node at r = x = " + number(p[0])
+          throw InputError(context + ": a node at r = x = " + number(p[0], 6)
                            + " < 0; the section must lie in x = r >= 0");
         if (std::abs(coordinates[3 * i + 2]) > tol)
           throw InputError(context + ": a node at z-coordinate "
-                           + number(coordinates[3 * i + 2])
+                           + number(coordinates[3 * i + 2], 6)
                            + "; the section must lie in the plane z = 0 (x = "
                              "r, y = axial position)");
       }

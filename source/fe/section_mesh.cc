@@ -5,6 +5,7 @@
 #include <coaxfit/fe/gmsh_transfer.h>
 #include <coaxfit/fe/mesh.h>
 #include <coaxfit/fe/section_mesh.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,18 +18,9 @@ namespace coaxfit
   namespace
   {
     std::string
-    number(const double x)
-    {
-      std::ostringstream text;
-      text.precision(6);
-      text << x;
-      return text.str();
-    }
-
-    std::string
     where(const Point<2> &p)
     {
-      return "(z = " + number(p[1]) + ", D = " + number(2. * p[0]) + ")";
+      return "(z = " + number(p[1], 6) + ", D = " + number(2. * p[0], 6) + ")";
     }
 
     /** A place on the outline: its arc length from the start of edge 0. */
@@ -71,7 +63,7 @@ namespace coaxfit
       if (best > tol)
         throw InputError("parameter " + outline.entry() + ": " + what + " "
                          + where(p) + " does not lie on the outline (it is "
-                         + number(best) + " mm away)");
+                         + number(best, 6) + " mm away)");
       return place;
     }
 
@@ -115,19 +107,19 @@ namespace coaxfit
     const double h_max
       = settings.max_cell_size > 0. ? settings.max_cell_size : 8. * h0;
     if (!(h0 > 0.) || !std::isfinite(h0))
-      throw InputError("parameter " + entry + ": cell size " + number(h0)
+      throw InputError("parameter " + entry + ": cell size " + number(h0, 6)
                        + " mm; it must be > 0");
     if (!(q >= 1.) || !(q <= 10.))
-      throw InputError("parameter " + entry + ": grading ratio " + number(q)
+      throw InputError("parameter " + entry + ": grading ratio " + number(q, 6)
                        + "; it must lie in [1, 10]");
     if (!(h_max >= h0) || !std::isfinite(h_max))
       throw InputError("parameter " + entry + ": largest cell size "
-                       + number(h_max) + " mm is below the cell size "
-                       + number(h0) + " mm");
+                       + number(h_max, 6) + " mm is below the cell size "
+                       + number(h0, 6) + " mm");
     if (perimeter / h0 > 1e5)
-      throw InputError("parameter " + entry + ": cell size " + number(h0)
+      throw InputError("parameter " + entry + ": cell size " + number(h0, 6)
                        + " mm gives more than 100000 cells along the outline ("
-                       + number(perimeter) + " mm long); use a larger one");
+                       + number(perimeter, 6) + " mm long); use a larger one");
     if (!boundary.edge_ids.empty() && boundary.edge_ids.size() != edges.size())
       throw std::logic_error(
         "make_section_mesh: " + std::to_string(boundary.edge_ids.size())

@@ -2,6 +2,7 @@
 
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/section_outline.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,15 +45,6 @@ namespace coaxfit
 
 
     constexpr double pi = numbers::PI;
-
-    std::string
-    number(const double x)
-    {
-      std::ostringstream text;
-      text.precision(6);
-      text << x;
-      return text.str();
-    }
 
     std::string
     trim(const std::string &text)
@@ -347,7 +339,7 @@ namespace coaxfit
           {
             if (!(values[2] > 0.))
               throw InputError(where
-                               + ": fillet radius R = " + number(values[2])
+                               + ": fillet radius R = " + number(values[2], 6)
                                + " mm; a fillet needs R > 0 (write 'z, D' for "
                                  "a sharp corner)");
             corner.fillet_radius = values[2];
@@ -365,7 +357,7 @@ namespace coaxfit
   {
     const std::string head     = "parameter " + entry + ": ";
     const auto        describe = [](const OutlineCorner &c) {
-      return "(z = " + number(c.z) + ", D = " + number(c.diameter) + ")";
+      return "(z = " + number(c.z, 6) + ", D = " + number(c.diameter, 6) + ")";
     };
 
     for (unsigned int i = 0; i < points.size(); ++i)
@@ -381,7 +373,7 @@ namespace coaxfit
                              "the axis)");
         if (points[i].fillet_radius < 0.)
           throw InputError(where + ": fillet radius R = "
-                           + number(points[i].fillet_radius)
+                           + number(points[i].fillet_radius, 6)
                            + " mm; a fillet needs R > 0");
       }
 
@@ -415,8 +407,8 @@ namespace coaxfit
       if (r_first > 0. && r_last > 0. && r_first != r_last)
         throw InputError(
           head + "the first and the closing point " + describe(raw.front())
-          + " give different fillet radii (" + number(r_first) + " and "
-          + number(r_last) + " mm); write it on one of them");
+          + " give different fillet radii (" + number(r_first, 6) + " and "
+          + number(r_last, 6) + " mm); write it on one of them");
       raw.front().fillet_radius = std::max(r_first, r_last);
     }
     const unsigned int n = raw.size();
@@ -510,16 +502,16 @@ namespace coaxfit
           const Tensor<1, 2> d1 = (here - prev) / here.distance(prev),
                              d2 = (next - here) / next.distance(here);
           if (here[0] <= tol)
-            throw InputError(head
-                             + "a fillet (R = " + number(raw[i].fillet_radius)
-                             + " mm) at " + point_name(i)
+            throw InputError(head + "a fillet (R = "
+                             + number(raw[i].fillet_radius, 6) + " mm) at "
+                             + point_name(i)
                              + " on the axis; fillets are allowed only at "
                                "points with D > 0");
           const double theta = std::atan2(std::abs(cross(d1, d2)), d1 * d2);
           if (theta <= 1e-9)
-            throw InputError(head
-                             + "a fillet (R = " + number(raw[i].fillet_radius)
-                             + " mm) at " + point_name(i)
+            throw InputError(head + "a fillet (R = "
+                             + number(raw[i].fillet_radius, 6) + " mm) at "
+                             + point_name(i)
                              + ", where the outline runs straight on; fillets "
                                "are allowed only at corners");
           tangent[i] = raw[i].fillet_radius * std::tan(theta / 2.);
@@ -534,18 +526,21 @@ namespace coaxfit
             && std::max(tangent[i], tangent[j]) <= length)
           throw InputError(head + "the fillets at " + point_name(i) + " and "
                            + point_name(j) + " overlap on their common edge ("
-                           + number(length) + " mm long): they take "
-                           + number(tangent[i]) + " + " + number(tangent[j])
+                           + number(length, 6) + " mm long): they take "
+                           + number(tangent[i], 6) + " + "
+                           + number(tangent[j], 6)
                            + " mm of it; the sum must not exceed its length");
         const unsigned int k = tangent[i] > length ? i : j;
         const unsigned int o = (k == i) ? j : i;
         throw InputError(
-          head + "the fillet R = " + number(raw[k].fillet_radius) + " mm at "
+          head + "the fillet R = " + number(raw[k].fillet_radius, 6) + " mm at "
           + point_name(k) + " is too large for " + side_name(i) + " ("
-          + number(length) + " mm): its tangent point lies "
-          + number(tangent[k]) + " mm from the corner; allowed R <= "
-          + number(std::max(
-            0., raw[k].fillet_radius * (length - tangent[o]) / tangent[k]))
+          + number(length, 6) + " mm): its tangent point lies "
+          + number(tangent[k], 6) + " mm from the corner; allowed R <= "
+          + number(std::max(0.,
+                            raw[k].fillet_radius * (length - tangent[o])
+                              / tangent[k]),
+                   6)
           + " mm");
       }
 
@@ -588,7 +583,7 @@ namespace coaxfit
           {
             const OutlineEdge &arc
               = edge_list[a].is_arc() ? edge_list[a] : edge_list[b];
-            throw InputError(head + "the fillet R = " + number(arc.radius)
+            throw InputError(head + "the fillet R = " + number(arc.radius, 6)
                              + " mm at " + point_name(arc.origin)
                              + " makes the outline intersect itself; use a "
                                "smaller radius");

@@ -152,7 +152,7 @@ namespace coaxfit
     p.design.resolve_friction(p.shaft.family, p.hub.family);
     // auto takes a material without a Name as steel: say so where its E
     // is not a steel's.
-    if (p.design.friction_source.find("taken as steel") != std::string::npos)
+    if (p.design.friction_from_table)
       for (const auto &[m, path] :
            {std::make_pair(&p.shaft, "Shaft"), std::make_pair(&p.hub, "Hub")})
         if (m->family == MaterialFamily::unknown

@@ -337,6 +337,7 @@ namespace coaxfit
         const FrictionValue value = din7190_friction(shaft, hub, joining);
         friction_coefficient      = value.coefficient;
         friction_source           = value.source;
+        friction_from_table       = true;
         return;
       }
     // A plain decimal number (no hexadecimal, no words).
@@ -357,6 +358,7 @@ namespace coaxfit
                          "from 1e-6 to 1");
     friction_coefficient = mu;
     friction_source      = "Design/Friction coefficient";
+    friction_from_table  = false;
   }
 
 

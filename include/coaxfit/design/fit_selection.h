@@ -129,16 +129,6 @@ namespace coaxfit
              <= joining_opening;
     }
 
-    /**
-     * Whether joining by temperature was assessed (joining_opening is
-     * finite); if not, joinable() is true for every fit.
-     */
-    bool
-    joining_assessed() const
-    {
-      return std::isfinite(joining_opening);
-    }
-
     /** Whether the band of @p fit lies inside DIN 7190's [U_min, U_max]. */
     bool
     inside_din_band(const IsoFit &fit) const
@@ -172,10 +162,6 @@ namespace coaxfit
      */
     static Parameters
     at_interference(const Parameters &parameters, double U);
-
-    /** @p parameters at assembly: no load of operation, no corner trend. */
-    static Parameters
-    at_assembly(const Parameters &parameters);
 
   private:
     void

@@ -172,6 +172,13 @@ namespace coaxfit
   /** The figures of the solved state @p state, called @p name. */
   OperationAnalysis::State
   state_figures(const std::string &name, const SolvedState &state);
+
+  /**
+   * @p parameters in the state of assembly: no load of operation (room
+   * temperature, at rest, no pressures) and no corner trend solve.
+   */
+  Parameters
+  at_assembly(const Parameters &parameters);
 } // namespace coaxfit
 
 #endif

@@ -28,12 +28,12 @@ namespace coaxfit
       }
   }
 
-  /** @p x with 10 significant digits, for messages. */
+  /** @p x with @p precision significant digits, for messages. */
   inline std::string
-  number(const double x)
+  number(const double x, const int precision = 10)
   {
     std::ostringstream s;
-    s.precision(10);
+    s.precision(precision);
     s << x;
     return s.str();
   }

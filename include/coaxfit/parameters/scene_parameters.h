@@ -127,14 +127,15 @@ namespace coaxfit
     JoiningMethod joining              = JoiningMethod::shrink;
     double        friction_coefficient = 0.15; ///< in use, after resolve
     std::string   friction_source;             ///< where it comes from
-    double        press_in_friction_coefficient = 0.08;
-    double        required_torque               = 0.; ///< N m; 0: none
-    double        required_axial_force          = 0.; ///< N; 0: none
-    double        slip_safety     = 1.; ///< required against slip (verdict)
-    double        yield_safety    = 1.; ///< required against yield (verdict)
-    double        fracture_safety = 2.; ///< required of a brittle hub (verdict)
-    double        edge_distance   = 0.; ///< mm; 0: 5 % of l_F
-    bool          corner_trend = true;  ///< solve once more, one level coarser
+    bool   friction_from_table = true; ///< auto: DIN 7190's, after resolve
+    double press_in_friction_coefficient = 0.08;
+    double required_torque               = 0.; ///< N m; 0: none
+    double required_axial_force          = 0.; ///< N; 0: none
+    double slip_safety     = 1.;   ///< required against slip (verdict)
+    double yield_safety    = 1.;   ///< required against yield (verdict)
+    double fracture_safety = 2.;   ///< required of a brittle hub (verdict)
+    double edge_distance   = 0.;   ///< mm; 0: 5 % of l_F
+    bool   corner_trend    = true; ///< solve once more, one level coarser
 
     void
     declare_parameters(ParameterHandler &prm);

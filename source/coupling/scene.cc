@@ -1,6 +1,9 @@
 #include <coaxfit/coupling/scene.h>
+#include <coaxfit/fe/section_scene.h>
 
+#include <array>
 #include <cctype>
+#include <memory>
 #include <stdexcept>
 
 namespace coaxfit
@@ -138,11 +141,40 @@ namespace coaxfit
 
 
 
+  SectionMeshSettings
+  section_mesh_settings(const Parameters &parameters)
+  {
+    SectionMeshSettings settings;
+    const double        l_F = 2. * parameters.geometry.contact_length();
+    settings.cell_size
+      = parameters.mesh.cell_size > 0. ? parameters.mesh.cell_size : 0.01 * l_F;
+    settings.grading_ratio      = parameters.mesh.grading_ratio;
+    settings.global_refinements = 0; // each body refines its copy
+    return settings;
+  }
+
+
+
   Scene::Scene(const Parameters &parameters)
   {
     for (const std::string &name : body_names(parameters))
       bodies.emplace_back(make_body(parameters, name));
     joints.push_back({0, 1, parameters.geometry.d});
+    if (parameters.sections)
+      {
+        // Both meshes at once: their joint vertices must coincide.
+        auto meshes = std::make_shared<std::array<Triangulation<2>, 2>>();
+        parameters.sections->make_meshes((*meshes)[0],
+                                         (*meshes)[1],
+                                         section_mesh_settings(parameters));
+        const unsigned int refinements = parameters.mesh.global_refinements;
+        for (unsigned int b = 0; b < 2; ++b)
+          bodies[b].discretization->set_mesh_builder(
+            [meshes, b, refinements](Triangulation<2> &triangulation) {
+              triangulation.copy_triangulation((*meshes)[b]);
+              triangulation.refine_global(refinements);
+            });
+      }
   }
 
 

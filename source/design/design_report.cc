@@ -1,4 +1,5 @@
 #include <coaxfit/design/design_report.h>
+#include <coaxfit/fe/section_scene.h>
 
 #include <cmath>
 #include <iomanip>
@@ -157,6 +158,17 @@ namespace coaxfit
     for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
       table << "; at the end, " << corner_text(m);
     table << ")\n";
+    if (parameters.sections)
+      table << "    (sections: the DIN 7190 column is the plain-cylinder "
+               "estimate, a hub of D_aA = "
+            << design_figure(2. * parameters.geometry.R2)
+            << " mm (its outer diameter averaged over the joint) and l_F = "
+            << design_figure(2. * parameters.geometry.contact_length())
+            << " mm; FE's hub outer surface is the section's largest "
+               "diameter on the mid-plane, D = "
+            << design_figure(2.
+                             * parameters.sections->hub_outer_radius_at_plane())
+            << " mm)\n";
     out << table.str();
   }
 } // namespace coaxfit

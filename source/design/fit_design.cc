@@ -1,4 +1,5 @@
 #include <coaxfit/design/fit_design.h>
+#include <coaxfit/fe/section_scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -91,7 +92,12 @@ namespace coaxfit
     check_points
       = {{"hub bore", stress_at(hub, hub_field, {g.R1, 0.}), din.hub_bore()},
          {"hub outer surface",
-          stress_at(hub, hub_field, {g.R2, 0.}),
+          stress_at(hub,
+                    hub_field,
+                    {parameters.sections ?
+                       parameters.sections->hub_outer_radius_at_plane() :
+                       g.R2,
+                     0.}),
           din.hub_outer()},
          {"shaft surface",
           stress_at(shaft, shaft_field, {g.R1, 0.}),

@@ -37,6 +37,7 @@ namespace coaxfit
       unsigned int       edge;
       double             t0, t1;
       types::boundary_id boundary_id;
+      bool               single = false; ///< exactly one cell
     };
 
     Place
@@ -72,6 +73,7 @@ namespace coaxfit
     {
       double             from, length;
       types::boundary_id boundary_id;
+      bool               fixed; ///< one cell between its vertices
     };
   } // namespace
 
@@ -91,7 +93,7 @@ namespace coaxfit
 
 
 
-  void
+  bool
   make_section_mesh(Triangulation<2>          &triangulation,
                     const SectionOutline      &outline,
                     const SectionBoundary     &boundary,
@@ -141,15 +143,23 @@ namespace coaxfit
           throw InputError("parameter " + entry + ": a tagged segment from "
                            + where(segment.start) + " to " + where(segment.end)
                            + " has no length");
+        const bool fixed = !segment.vertices.empty();
         if (forward <= perimeter / 2.)
-          intervals.push_back({a.arclength, forward, segment.boundary_id});
+          intervals.push_back(
+            {a.arclength, forward, segment.boundary_id, fixed});
         else
           intervals.push_back(
-            {b.arclength, perimeter - forward, segment.boundary_id});
+            {b.arclength, perimeter - forward, segment.boundary_id, fixed});
+        for (const Point<2> &v : segment.vertices)
+          {
+            const Place p = locate(outline, v, tol, "tagged segment vertex");
+            splits[p.edge].push_back(p.t);
+          }
         for (const Place &p : {a, b})
           {
             splits[p.edge].push_back(p.t);
-            sources.push_back(edges[p.edge].point_at(p.t));
+            if (segment.refine_ends)
+              sources.push_back(edges[p.edge].point_at(p.t));
           }
       }
     // Stresses concentrate at re-entrant corners and their fillets.
@@ -194,7 +204,10 @@ namespace coaxfit
                   if (offset < 0.)
                     offset += perimeter;
                   if (offset < in.length)
-                    piece.boundary_id = in.boundary_id;
+                    {
+                      piece.boundary_id = in.boundary_id;
+                      piece.single      = in.fixed;
+                    }
                 }
               pieces.push_back(piece);
             }
@@ -228,75 +241,143 @@ namespace coaxfit
           arc_centres[id] = edges[k].centre;
         }
 
+    bool             full_quad = false;
+    std::vector<int> piece_curves; // the gmsh curve of each piece
     run_gmsh_session("parameter " + entry, [&]() {
-      gmsh::model::add("section");
-      // One gmsh point per vertex of the outline, shared by its two pieces.
-      std::vector<int> first_point(pieces.size());
-      for (unsigned int i = 0; i < pieces.size(); ++i)
-        {
-          const Point<2> p = edges[pieces[i].edge].point_at(pieces[i].t0);
-          first_point[i]   = gmsh::model::geo::addPoint(p[0], p[1], 0.);
-        }
-      std::map<int, double> arc_cap; // curve tag: largest cell on the arc
-      std::vector<int>      loop;
-      for (unsigned int i = 0; i < pieces.size(); ++i)
-        {
-          const OutlineEdge &edge = edges[pieces[i].edge];
-          const int          a    = first_point[i],
-                    b             = first_point[(i + 1) % pieces.size()];
-          int      curve;
-          CurveTag tag;
-          tag.boundary_id = pieces[i].boundary_id;
-          if (edge.is_arc())
-            {
-              const int centre = gmsh::model::geo::addPoint(edge.centre[0],
-                                                            edge.centre[1],
-                                                            0.);
-              curve            = gmsh::model::geo::addCircleArc(a, centre, b);
-              tag.manifold_id  = arc_manifold[pieces[i].edge];
-              // At least 6 cells per quarter circle.
-              arc_cap[curve] = edge.radius * numbers::PI / 12.;
-            }
-          else
-            curve = gmsh::model::geo::addLine(a, b);
-          curves[curve] = tag;
-          loop.push_back(curve);
-        }
-      const int wire = gmsh::model::geo::addCurveLoop(loop);
-      gmsh::model::geo::addPlaneSurface({wire});
-      gmsh::model::geo::synchronize();
+      // The model, meshed with the recombination @p algorithm (from scratch:
+      // clearing a mesh loses the transfinite curves in gmsh 4.11).
+      // extra_piece (if a piece index) gets extra_nodes nodes, uniformly.
+      const auto mesh_with = [&](const int          algorithm,
+                                 const unsigned int extra_piece,
+                                 const int          extra_nodes) {
+        curves.clear();
+        piece_curves.clear();
+        gmsh::model::add("section");
+        // One gmsh point per vertex of the outline, shared by its two pieces.
+        std::vector<int> first_point(pieces.size());
+        for (unsigned int i = 0; i < pieces.size(); ++i)
+          {
+            const Point<2> p = edges[pieces[i].edge].point_at(pieces[i].t0);
+            first_point[i]   = gmsh::model::geo::addPoint(p[0], p[1], 0.);
+          }
+        std::map<int, double> arc_cap; // curve tag: largest cell on the arc
+        std::vector<int>      single_curves; // one cell each
+        std::vector<int>      loop;
+        for (unsigned int i = 0; i < pieces.size(); ++i)
+          {
+            const OutlineEdge &edge = edges[pieces[i].edge];
+            const int          a    = first_point[i],
+                      b             = first_point[(i + 1) % pieces.size()];
+            int      curve;
+            CurveTag tag;
+            tag.boundary_id = pieces[i].boundary_id;
+            if (edge.is_arc())
+              {
+                const int centre = gmsh::model::geo::addPoint(edge.centre[0],
+                                                              edge.centre[1],
+                                                              0.);
+                curve            = gmsh::model::geo::addCircleArc(a, centre, b);
+                tag.manifold_id  = arc_manifold[pieces[i].edge];
+                // At least 6 cells per quarter circle.
+                arc_cap[curve] = edge.radius * numbers::PI / 12.;
+              }
+            else
+              curve = gmsh::model::geo::addLine(a, b);
+            curves[curve] = tag;
+            loop.push_back(curve);
+            piece_curves.push_back(curve);
+            if (i == extra_piece)
+              gmsh::model::geo::mesh::setTransfiniteCurve(curve, extra_nodes);
+            if (pieces[i].single)
+              single_curves.push_back(curve);
+          }
+        const int wire = gmsh::model::geo::addCurveLoop(loop);
+        gmsh::model::geo::addPlaneSurface({wire});
+        for (const int curve : single_curves)
+          gmsh::model::geo::mesh::setTransfiniteCurve(curve, 2);
+        gmsh::model::geo::synchronize();
 
-      gmsh::model::mesh::setSizeCallback([&](const int    dim,
-                                             const int    tag,
-                                             const double x,
-                                             const double y,
-                                             const double) {
-        double h = size_at(Point<2>(x, y));
-        if (dim == 1 && arc_cap.count(tag) > 0)
-          h = std::min(h, arc_cap[tag]);
-        return h;
-      });
-      gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-      gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-      gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-      gmsh::option::setNumber("Mesh.Algorithm", 6); // frontal-Delaunay
-      gmsh::option::setNumber("Mesh.RecombineAll", 1);
-      gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
+        gmsh::model::mesh::setSizeCallback([&](const int    dim,
+                                               const int    tag,
+                                               const double x,
+                                               const double y,
+                                               const double) {
+          double h = size_at(Point<2>(x, y));
+          if (dim == 1 && arc_cap.count(tag) > 0)
+            h = std::min(h, arc_cap[tag]);
+          return h;
+        });
+        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+        gmsh::option::setNumber("Mesh.Algorithm", 6); // frontal-Delaunay
+        gmsh::option::setNumber("Mesh.RecombineAll", 1);
+        gmsh::option::setNumber("Mesh.RecombinationAlgorithm", algorithm);
+        gmsh::model::mesh::generate(1);
+        check_gmsh_error("parameter " + entry);
+      };
+      // Blossom recombines all triangles only if the number of boundary
+      // cells is even: if it is odd, the coarsest piece that is not fixed
+      // gets one cell more (uniform on that piece).
+      const unsigned int none = numbers::invalid_unsigned_int;
+      mesh_with(settings.full_quad ? 3 : 1, none, 0); // 1: Blossom
+      if (!settings.full_quad)
+        {
+          std::size_t  total = 0, best_cells = 0;
+          unsigned int best      = none;
+          double       best_size = 0.;
+          for (unsigned int i = 0; i < pieces.size(); ++i)
+            {
+              std::vector<int>                      types;
+              std::vector<std::vector<std::size_t>> tags, nodes;
+              gmsh::model::mesh::getElements(
+                types, tags, nodes, 1, piece_curves[i]);
+              const std::size_t cells = tags.empty() ? 0 : tags[0].size();
+              total += cells;
+              const OutlineEdge &edge = edges[pieces[i].edge];
+              const double       size
+                = (pieces[i].t1 - pieces[i].t0) * edge.length() / cells;
+              if (!pieces[i].single && !edge.is_arc() && size > best_size)
+                {
+                  best       = i;
+                  best_cells = cells;
+                  best_size  = size;
+                }
+            }
+          if (total % 2 == 1 && best != none)
+            {
+              gmsh::model::remove();
+              mesh_with(1, best, static_cast<int>(best_cells) + 2);
+            }
+        }
       gmsh::model::mesh::generate(2);
       check_gmsh_error("parameter " + entry);
 
       std::vector<int>                      types;
       std::vector<std::vector<std::size_t>> tags, nodes;
       gmsh::model::mesh::getElements(types, tags, nodes, 2, -1);
-      if (std::any_of(types.begin(), types.end(), [](const int t) {
+      full_quad = settings.full_quad;
+      if (full_quad || std::any_of(types.begin(), types.end(), [](const int t) {
             return t != 3;
           }))
         {
-          // Blossom left triangles: its full-quad variant splits them.
-          gmsh::model::mesh::clear();
-          gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);
-          gmsh::model::mesh::generate(2);
-          check_gmsh_error("parameter " + entry);
+          // Blossom left triangles: its full-quad variant splits them
+          // (gmsh cannot split cells of fixed pieces).
+          if (!full_quad)
+            {
+              if (std::any_of(pieces.begin(), pieces.end(), [](const Piece &p) {
+                    return p.single;
+                  }))
+                throw InputError("parameter " + entry
+                                 + ": gmsh did not mesh the section into "
+                                   "quadrilaterals alone; try another "
+                                   "Mesh/Cell size");
+              gmsh::model::remove();
+              mesh_with(3, none, 0);
+              gmsh::model::mesh::generate(2);
+              check_gmsh_error("parameter " + entry);
+            }
+          full_quad = true;
         }
       transfer_gmsh_mesh(triangulation,
                          curves,
@@ -305,5 +386,6 @@ namespace coaxfit
                          "parameter " + entry);
     });
     triangulation.refine_global(settings.global_refinements);
+    return full_quad;
   }
 } // namespace coaxfit

@@ -1,4 +1,5 @@
 #include <coaxfit/design/design_report.h>
+#include <coaxfit/fe/section_scene.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <cmath>
@@ -53,6 +54,14 @@ namespace coaxfit
           << "| hub length, shaft length | " << 2. * g.L2 << " mm, "
           << 2. * g.L1 << " mm (hub centred; joint length "
           << 2. * g.contact_length() << " mm) |\n"
+          << (p.sections ?
+                "| shaft section (z, D) | " + p.drawing.shaft_section
+                  + " |\n| hub section (z, D) | " + p.drawing.hub_section
+                  + " |\n| model | the half z >= "
+                  + design_figure(p.sections->drawing_offset())
+                  + " of both sections (symmetric), D_aA "
+                    "above averaged over the joint |\n" :
+                std::string())
           << "| interference | " << interference_line(p) << " |\n"
           << "| shaft | " << material_line(p.shaft) << " |\n"
           << "| hub | " << material_line(p.hub) << " |\n"

@@ -526,6 +526,18 @@ namespace coaxfit
                       "meshes; 0 is the paper's coarse mesh. Allowed: 0 to "
                       "10.",
                       Patterns::Integer(0, 10));
+    prm.add_parameter("Cell size",
+                      cell_size,
+                      "Sections only (Geometry/Shaft section, Hub "
+                      "section): the size of the cells at the ends of the "
+                      "joint and at re-entrant corners in mm before global "
+                      "refinement; away from them cells grow by Mesh/"
+                      "Grading ratio per cell up to 8 times this size. "
+                      "Both bodies get the same vertices on the joint. 0: "
+                      "l_F / 100. Mesh/Axial cells and Radial cells apply "
+                      "to plain cylinders only. Allowed: 0, or 1e-6 l_F to "
+                      "l_F.",
+                      Patterns::Double(0.));
     prm.add_parameter("Degree",
                       degree,
                       "Polynomial degree p of the FE_Q elements for both "

@@ -1,4 +1,5 @@
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/fe/section_scene.h>
 #include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/material_library.h>
 #include <coaxfit/parameters/parameter_checks.h>
@@ -128,9 +129,76 @@ namespace coaxfit
 
 
 
+  namespace
+  {
+    /**
+     * The scene of `Geometry/Shaft section` and `Hub section`: both given,
+     * the plain entries left out (derived from the sections), the mesh
+     * and loads this version models with sections.
+     */
+    void
+    complete_sections(Parameters &p, std::set<std::string> &missing)
+    {
+      const std::string shaft = "Geometry/Shaft section",
+                        hub   = "Geometry/Hub section";
+      if (p.drawing.shaft_section.empty() || p.drawing.hub_section.empty())
+        throw InputError(
+          "parameter " + (p.drawing.shaft_section.empty() ? shaft : hub)
+          + " is empty while " + (p.drawing.shaft_section.empty() ? hub : shaft)
+          + " is given: give both sections (a plain cylinder "
+            "as its outline), or neither");
+      for (const std::string name : {"Joint diameter",
+                                     "Shaft bore diameter",
+                                     "Hub outer diameter",
+                                     "Hub length",
+                                     "Shaft length"})
+        if (missing.erase("Geometry." + name) == 0)
+          throw InputError("parameter Geometry/" + name + " is given with "
+                           + shaft + " and " + hub
+                           + ": the sections decide it; leave it out");
+      const auto scene
+        = std::make_shared<const SectionScene>(p.drawing.shaft_section,
+                                               p.drawing.hub_section);
+      p.drawing.joint_diameter      = 2. * scene->joint_radius();
+      p.drawing.shaft_bore_diameter = scene->shaft_bore_diameter();
+      p.drawing.hub_outer_diameter  = scene->hub_outer_diameter();
+      p.drawing.hub_length          = scene->joint_length();
+      p.drawing.shaft_length        = scene->shaft_length();
+      p.sections                    = scene;
+      const double l_F              = scene->joint_length();
+      require(p.mesh.cell_size == 0.
+                || (p.mesh.cell_size >= 1e-6 * l_F && p.mesh.cell_size <= l_F),
+              "Mesh/Cell size",
+              p.mesh.cell_size,
+              "0 (l_F / 100) or 1e-6 l_F to l_F (l_F = " + number(l_F)
+                + " mm, the joint length of the sections)");
+      const OperationParameters &o = p.operation;
+      for (const auto &[name, value] :
+           {std::make_pair("Operation/Shaft bore pressure",
+                           o.shaft_bore_pressure),
+            std::make_pair("Operation/Hub outer pressure",
+                           o.hub_outer_pressure)})
+        require(value == 0.,
+                name,
+                value,
+                "0 with sections (this version puts no pressure on a "
+                "section's faces)");
+      const MeshParameters plain;
+      if (p.mesh.axial_cells != plain.axial_cells
+          || p.mesh.radial_cells != plain.radial_cells)
+        p.read_notes.push_back("Mesh/Axial cells and Mesh/Radial cells are not "
+                               "used: the sections are meshed by Mesh/Cell "
+                               "size");
+    }
+  } // namespace
+
+
+
   void
   complete_scene(Parameters &p, std::set<std::string> &missing)
   {
+    if (p.drawing.has_sections())
+      complete_sections(p, missing);
     fill_material(p.shaft, "Shaft", missing);
     fill_material(p.hub, "Hub", missing);
     // A selection chooses the interference itself.

@@ -71,6 +71,24 @@ namespace coaxfit
                       "1e5 mm.",
                       non_negative,
                       required);
+    const std::string outline_rules
+      = "Closed polygon 'z, D; z, D; ...' (axial position and DIAMETER in "
+        "mm, drawing coordinates; the last point repeats the first; a "
+        "third number R rounds that corner with a fillet of radius R). "
+        "Both sections or neither: with them, the plain entries above are "
+        "left out (the sections decide them: D_F and l_F from the joint, "
+        "D_aA the hub's outer diameter averaged over the joint) and "
+        "Mesh/Cell size decides the meshes. This version models scenes "
+        "symmetric about a plane z = const with one cylindrical joint "
+        "(doc/real_parts.md). Empty: the plain cylinders.";
+    prm.add_parameter("Shaft section",
+                      shaft_section,
+                      "Section of the shaft, the inner body. " + outline_rules,
+                      Patterns::Anything());
+    prm.add_parameter("Hub section",
+                      hub_section,
+                      "Section of the hub, the outer body. " + outline_rules,
+                      Patterns::Anything());
     prm.leave_subsection();
   }
 

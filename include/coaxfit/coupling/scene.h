@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <coaxfit/fe/body_discretization.h>
+#include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/parameters/parameters.h>
 #include <coaxfit/solvers/body_solver.h>
 #include <coaxfit/solvers/condensed_body.h>
@@ -153,6 +154,15 @@ namespace coaxfit
    */
   BodyLoad
   body_load(const Parameters &parameters, const std::string &name);
+
+  /**
+   * How the sections of @p parameters are meshed: Mesh/Cell size (0: 1 %
+   * of the joint length) at the ends of the joint and at re-entrant
+   * corners, Mesh/Grading ratio away from them; no refinement (each body
+   * refines its copy by Mesh/Global refinements).
+   */
+  SectionMeshSettings
+  section_mesh_settings(const Parameters &parameters);
 
   /** The discretization of the body named @p name, not set up. */
   std::unique_ptr<BodyDiscretization>

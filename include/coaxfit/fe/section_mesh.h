@@ -42,6 +42,19 @@ namespace coaxfit
     Point<2>           start; ///< (r, z) on the outline, mm
     Point<2>           end;   ///< (r, z) on the outline, mm
     types::boundary_id boundary_id = 0;
+    /**
+     * If not empty: the segment's cells are fixed, one between each two
+     * consecutive points of start, these vertices (on the outline, in
+     * order) and end, whatever the cell size says. Two bodies meshed
+     * with the same vertices on their joint get coinciding nodes there.
+     */
+    std::vector<Point<2>> vertices;
+    /**
+     * Whether the mesh is refined towards both ends (false for a segment
+     * that ends on a symmetry plane: give its other end as a refinement
+     * point).
+     */
+    bool refine_ends = true;
 
     /** The segment from (z, D) to (z, D) in drawing coordinates. */
     static TaggedSegment
@@ -82,6 +95,12 @@ namespace coaxfit
     double max_cell_size = 0.;  ///< mm; 0: 8 cell_size
     std::vector<Point<2>> refinement_points; ///< (r, z), mm
     unsigned int          global_refinements = 0;
+    /**
+     * Split every cell of gmsh's recombined mesh into four quadrilaterals
+     * (gmsh's full-quad variant), which halves every boundary cell,
+     * whether or not the Blossom recombination alone leaves a triangle.
+     */
+    bool full_quad = false;
   };
 
   /**
@@ -96,8 +115,12 @@ namespace coaxfit
    * @throws InputError naming outline.entry() if a tagged segment does not
    * lie on the outline, the settings are out of range, gmsh fails or the
    * mesh is not all quadrilaterals.
+   *
+   * @return whether the full-quad variant was used (asked for, or because
+   * Blossom left a triangle): then every boundary cell, also of a segment
+   * with fixed vertices, was halved.
    */
-  void
+  bool
   make_section_mesh(Triangulation<2>          &triangulation,
                     const SectionOutline      &outline,
                     const SectionBoundary     &boundary,

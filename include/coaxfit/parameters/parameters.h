@@ -6,6 +6,7 @@
 #include <coaxfit/parameters/material_library.h>
 #include <coaxfit/parameters/scene_parameters.h>
 
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
@@ -13,6 +14,8 @@
 
 namespace coaxfit
 {
+  class SectionScene;
+
   using namespace dealii;
 
   /**
@@ -141,6 +144,8 @@ namespace coaxfit
     unsigned int          global_refinements     = 0;
     unsigned int          degree                 = 2;
     VolumetricIntegration volumetric_integration = VolumetricIntegration::full;
+    /** mm at the ends of a section's joint; 0: l_F / 100 (sections only). */
+    double cell_size = 0.;
 
     /** The grading must leave cells of representable size. */
     void
@@ -343,12 +348,17 @@ namespace coaxfit
    */
   struct Parameters
   {
-    DrawingGeometry     drawing;    ///< `Geometry`: diameters, full lengths
-    FitParameters       fit;        ///< `Fit`
-    FitLimits           fit_limits; ///< the interference in use (derived)
-    GeometryParameters  geometry;   ///< the model's half section (derived)
-    Material            shaft;      ///< material of D1 (shaft or tube)
-    Material            hub;        ///< material of D2 (hub)
+    DrawingGeometry    drawing;    ///< `Geometry`: diameters, full lengths
+    FitParameters      fit;        ///< `Fit`
+    FitLimits          fit_limits; ///< the interference in use (derived)
+    GeometryParameters geometry;   ///< the model's half section (derived)
+    /**
+     * The sections of `Geometry/Shaft section` and `Hub section`, checked
+     * and placed (derived); null for plain cylinders.
+     */
+    std::shared_ptr<const SectionScene> sections;
+    Material            shaft; ///< material of D1 (shaft or tube)
+    Material            hub;   ///< material of D2 (hub)
     DesignParameters    design;
     OperationParameters operation; ///< `Operation`: loads in service
     MeshParameters      mesh;

@@ -26,6 +26,18 @@ namespace coaxfit
     double hub_outer_diameter  = 400.; ///< D_aA
     double hub_length          = 200.; ///< full length of the hub
     double shaft_length        = 400.; ///< full length of the shaft
+    /**
+     * `Shaft section`, `Hub section`: outlines `z, D; z, D, R; ...` as
+     * given; both empty: the plain cylinders of the entries above.
+     */
+    std::string shaft_section, hub_section;
+
+    /** Whether the bodies are drawn as sections. */
+    bool
+    has_sections() const
+    {
+      return !shaft_section.empty() || !hub_section.empty();
+    }
 
     void
     declare_parameters(ParameterHandler &prm);

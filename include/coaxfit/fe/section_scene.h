@@ -1,0 +1,154 @@
+#ifndef coaxfit_section_scene_h
+#define coaxfit_section_scene_h
+
+#include <deal.II/grid/tria.h>
+
+#include <coaxfit/fe/section_mesh.h>
+#include <coaxfit/fe/section_outline.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  using namespace dealii;
+
+  /**
+   * A scene of two bodies drawn as sections (`Geometry/Shaft section`,
+   * `Geometry/Hub section`): both outlines checked, where they meet (the
+   * joint), the plane about which the scene is symmetric, and the half
+   * sections the model meshes.
+   *
+   * This version models scenes that are symmetric about a plane z = z_m
+   * and whose joint is one cylinder: the half z >= z_m of each section,
+   * shifted so that the plane is z = 0 of the model (u_z = 0 there, as the
+   * plain cylinders have it), the joint from z = 0 to its half length.
+   * Any other scene (a hub flush with the shaft end, a taper, a joint of
+   * several pieces or against a shoulder) is refused with one line naming
+   * both entries; see doc/real_parts.md for what comes next.
+   *
+   * Both bodies are meshed by gmsh with the same vertices on the joint
+   * (joint_vertices(): graded towards its ends from the cell size), so
+   * that their joint nodes coincide and the coupling takes the exact
+   * index map; if one mesh needs gmsh's full-quad subdivision, both get
+   * it (make_meshes()).
+   */
+  class SectionScene
+  {
+  public:
+    /**
+     * Parse, check and place the outlines @p shaft_text and @p hub_text.
+     * @throws InputError naming the entry (or both) at fault.
+     */
+    SectionScene(const std::string &shaft_text, const std::string &hub_text);
+
+    /** The outline as drawn of the shaft (@p shaft) or of the hub. */
+    const SectionOutline &
+    drawn(bool shaft) const
+    {
+      return shaft ? *shaft_drawn : *hub_drawn;
+    }
+
+    /** The modelled half (z >= 0 of the model) of the shaft or the hub. */
+    const SectionOutline &
+    modelled(bool shaft) const
+    {
+      return shaft ? *shaft_half : *hub_half;
+    }
+
+    /** Joint radius R_F (mm). */
+    double
+    joint_radius() const
+    {
+      return radius;
+    }
+
+    /** Joint length l_F (mm), the whole joint. */
+    double
+    joint_length() const
+    {
+      return 2. * half_length;
+    }
+
+    /**
+     * Drawing z of the model's z = 0: the symmetry plane z_m (a drawing
+     * z is model z + drawing_offset()).
+     */
+    double
+    drawing_offset() const
+    {
+      return z_m;
+    }
+
+    /**
+     * The hub's outer diameter averaged over the joint (mm): D_aA of the
+     * plain-cylinder estimate (DIN 7190 column).
+     */
+    double
+    hub_outer_diameter() const
+    {
+      return hub_mean_outer;
+    }
+
+    /**
+     * The shaft's bore diameter for the plain-cylinder estimate (mm): 0 if
+     * the shaft's section reaches the axis, else its smallest diameter.
+     */
+    double
+    shaft_bore_diameter() const
+    {
+      return shaft_bore;
+    }
+
+    /**
+     * The largest radius of the hub's section on the plane of symmetry
+     * (mm): where its outer surface crosses the mid-plane (the rim of a
+     * gear hub), the point of the FE's "hub outer surface" figures.
+     */
+    double
+    hub_outer_radius_at_plane() const;
+
+    /** Axial extent of the shaft's section (mm). */
+    double
+    shaft_length() const
+    {
+      return shaft_extent;
+    }
+
+    /**
+     * The joint's vertices in the model (r = R_F, 0 < z < l_F / 2,
+     * ascending): the first cell at each end of the joint has size
+     * @p cell_size, sizes grow by @p grading_ratio towards the middle up
+     * to @p max_cell_size, and the half joint is filled exactly.
+     */
+    std::vector<Point<2>>
+    joint_vertices(double cell_size,
+                   double grading_ratio,
+                   double max_cell_size) const;
+
+    /**
+     * Mesh both modelled sections into @p shaft and @p hub (empty): the
+     * joint tagged BoundaryId::joint with the same vertices in both, the
+     * plane z = 0 BoundaryId::symmetry, r = 0 BoundaryId::axis, every other
+     * face SectionId::free. @p settings.refinement_points are ignored: the
+     * ends of the joint and re-entrant corners are refined.
+     */
+    void
+    make_meshes(Triangulation<2>          &shaft,
+                Triangulation<2>          &hub,
+                const SectionMeshSettings &settings) const;
+
+  private:
+    std::unique_ptr<SectionOutline> shaft_drawn, hub_drawn;
+    std::unique_ptr<SectionOutline> shaft_half, hub_half;
+    double                          radius         = 0.;
+    double                          half_length    = 0.;
+    double                          z_m            = 0.;
+    double                          hub_mean_outer = 0.;
+    double                          shaft_bore     = 0.;
+    double                          shaft_extent   = 0.;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,197 @@
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/fe/mesh.h>
+#include <coaxfit/fe/section_joint.h>
+#include <coaxfit/fe/section_scene.h>
+#include <coaxfit/fe/section_symmetry.h>
+#include <coaxfit/parameters/parameter_checks.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace coaxfit
+{
+  namespace
+  {
+    const std::string shaft_entry = "Geometry/Shaft section";
+    const std::string hub_entry   = "Geometry/Hub section";
+    const std::string both
+      = "parameters " + shaft_entry + " and " + hub_entry + ": ";
+
+    /** @p outline moved by @p dz along the axis (same entry). */
+    SectionOutline
+    shifted(const SectionOutline &outline, const double dz)
+    {
+      std::vector<OutlineCorner> corners = outline.corners();
+      for (OutlineCorner &c : corners)
+        c.z += dz;
+      corners.push_back(corners.front()); // closed explicitly
+      return SectionOutline(corners, outline.entry());
+    }
+
+    /** Smallest and largest z of the corners of @p outline. */
+    std::pair<double, double>
+    axial_range(const SectionOutline &outline)
+    {
+      double lo = outline.corners().front().z, hi = lo;
+      for (const OutlineCorner &c : outline.corners())
+        {
+          lo = std::min(lo, c.z);
+          hi = std::max(hi, c.z);
+        }
+      return {lo, hi};
+    }
+  } // namespace
+
+
+
+  SectionScene::SectionScene(const std::string &shaft_text,
+                             const std::string &hub_text)
+    : shaft_drawn(std::make_unique<SectionOutline>(
+      SectionOutline::parse(shaft_text, shaft_entry)))
+    , hub_drawn(std::make_unique<SectionOutline>(
+        SectionOutline::parse(hub_text, hub_entry)))
+  {
+    const std::vector<JointPiece> pieces = find_joint(*shaft_drawn, *hub_drawn);
+    const double                  tol
+      = 1e-6 * std::max(shaft_drawn->extent(), hub_drawn->extent());
+    if (pieces.size() != 1)
+      throw InputError(both + "the sections meet in "
+                       + std::to_string(pieces.size())
+                       + " pieces; this version models a joint that is one "
+                         "cylinder (a relief groove in the bore, a shoulder "
+                         "face or a taper is not modelled yet)");
+    const JointPiece &joint = pieces.front();
+    if (std::abs(joint.start[0] - joint.end[0]) > tol)
+      throw InputError(both + "the joint from z = " + number(joint.start[1], 6)
+                       + " to " + number(joint.end[1], 6)
+                       + " is not a cylinder (a cone or a face); this "
+                         "version models cylindrical joints only");
+    if (joint.normal[0] < 0.)
+      throw InputError(both
+                       + "the shaft's section lies outside the hub's at "
+                         "the joint; the shaft must be the inner body");
+    radius            = joint.start[0];
+    const double z_lo = std::min(joint.start[1], joint.end[1]);
+    const double z_hi = std::max(joint.start[1], joint.end[1]);
+    half_length       = 0.5 * (z_hi - z_lo);
+    hub_mean_outer    = mean_outer_diameter(*hub_drawn, z_lo, z_hi);
+    const auto [a, b] = axial_range(*shaft_drawn);
+    shaft_extent      = b - a;
+    shaft_bore        = shaft_drawn->corners().front().diameter;
+    for (const OutlineCorner &c : shaft_drawn->corners())
+      shaft_bore = std::min(shaft_bore, c.diameter);
+
+    const std::optional<double> plane
+      = mirror_plane({shaft_drawn.get(), hub_drawn.get()});
+    if (!plane || std::abs(*plane - 0.5 * (z_lo + z_hi)) > tol)
+      throw InputError(
+        both
+        + "the scene is not symmetric about a plane z = const (the "
+          "mirror image of each section about the joint's middle z = "
+        + number(0.5 * (z_lo + z_hi), 6)
+        + " must be the section itself); this version models symmetric "
+          "scenes as their half, whole models (a hub flush with the shaft "
+          "end, a shoulder beside the hub) are not modelled yet");
+    z_m                   = *plane;
+    const auto shaft_part = half_outline(*shaft_drawn, z_m);
+    const auto hub_part   = half_outline(*hub_drawn, z_m);
+    if (!shaft_part || !hub_part)
+      throw InputError(both + "the half z >= " + number(z_m, 6) + " of the "
+                       + (shaft_part ? "hub's" : "shaft's")
+                       + " section is not one region or a fillet touches "
+                         "the plane of symmetry; such scenes are not "
+                         "modelled yet");
+    shaft_half = std::make_unique<SectionOutline>(shifted(*shaft_part, -z_m));
+    hub_half   = std::make_unique<SectionOutline>(shifted(*hub_part, -z_m));
+  }
+
+
+
+  double
+  SectionScene::hub_outer_radius_at_plane() const
+  {
+    double r = radius;
+    for (const OutlineCorner &c : hub_half->corners())
+      if (std::abs(c.z) <= 1e-9 * hub_half->extent())
+        r = std::max(r, 0.5 * c.diameter);
+    return r;
+  }
+
+
+
+  std::vector<Point<2>>
+  SectionScene::joint_vertices(const double cell_size,
+                               const double grading_ratio,
+                               const double max_cell_size) const
+  {
+    // Sizes from the end of the joint towards its middle.
+    std::vector<double> sizes;
+    double              sum = 0., h = cell_size;
+    while (sum < half_length * (1. - 1e-9) && sizes.size() < 100000)
+      {
+        sizes.push_back(h);
+        sum += h;
+        h = std::min(h * grading_ratio, max_cell_size);
+      }
+    // The last cell overshoots: shrink all in proportion.
+    const double          scale = half_length / sum;
+    std::vector<Point<2>> vertices;
+    double                z = half_length;
+    for (unsigned int k = 0; k + 1 < sizes.size(); ++k)
+      {
+        z -= sizes[k] * scale;
+        vertices.emplace_back(radius, z);
+      }
+    std::reverse(vertices.begin(), vertices.end());
+    return vertices;
+  }
+
+
+
+  void
+  SectionScene::make_meshes(Triangulation<2>          &shaft,
+                            Triangulation<2>          &hub,
+                            const SectionMeshSettings &settings) const
+  {
+    const Point<2> middle(radius, 0.), end(radius, half_length);
+    const double  h_max = settings.max_cell_size > 0. ? settings.max_cell_size :
+                                                        8. * settings.cell_size;
+    TaggedSegment joint{middle, end, BoundaryId::joint};
+    joint.vertices
+      = joint_vertices(settings.cell_size, settings.grading_ratio, h_max);
+    joint.refine_ends = false;
+
+    const auto boundary_of = [&](const SectionOutline &outline) {
+      SectionBoundary boundary;
+      boundary.segments.push_back(joint);
+      const double tol = 1e-9 * outline.extent();
+      for (const OutlineEdge &edge : outline.edges())
+        if (!edge.is_arc() && std::abs(edge.start[1]) <= tol
+            && std::abs(edge.end[1]) <= tol)
+          {
+            TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
+            plane.refine_ends = false;
+            boundary.segments.push_back(plane);
+          }
+      return boundary;
+    };
+    SectionMeshSettings local = settings;
+    local.refinement_points   = {end};
+    const auto mesh_both      = [&](const bool full_quad) {
+      shaft.clear();
+      hub.clear();
+      local.full_quad = full_quad;
+      const bool a    = make_section_mesh(shaft,
+                                       modelled(true),
+                                       boundary_of(modelled(true)),
+                                       local);
+      const bool b    = make_section_mesh(hub,
+                                       modelled(false),
+                                       boundary_of(modelled(false)),
+                                       local);
+      return a == b;
+    };
+    if (!mesh_both(settings.full_quad))
+      mesh_both(true);
+  }
+} // namespace coaxfit

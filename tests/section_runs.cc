@@ -1,0 +1,243 @@
+// Bodies drawn as sections (Geometry/Shaft section, Hub section), run
+// through the executable:
+//
+// 1. The plain cylinders of a drawing (shaft D 50, z -100..100; hub
+//    D 50-100, z -25..25; steel, U = 0.05 mm) as outlines, meshed by gmsh,
+//    beside the plain builder of the same drawing: the pressure at the
+//    mid-plane and the mean pressure agree within 0.1 %.
+// 2. prm/examples/gear_on_shaft.prm against an independent CalculiX
+//    solution (not in the repository: CAX8 elements, u_r of the two
+//    bodies tied with the interference at coinciding nodes, u_z free, the
+//    pressure compressive everywhere; four meshes down to 0.0125 mm at the
+//    joint ends, the figures below changing by less than 5e-5 between the
+//    last two): mean pressure 75.455 MPa, p(0) 86.431, p(5) 83.513,
+//    p(10) 76.384, p(15) 69.023, p(20) 64.934 MPa. Required: within
+//    0.5 % at the shipped mesh (points of contact_pressure.csv
+//    interpolated linearly).
+// 3. The gear hub's mean pressure lies between those of plain hubs D 80
+//    and D 180 of the joint's length.
+// 4. Refinement study of the gear example: mean pressure and pressure at
+//    three interior points at Global refinements 0, 1, 2, the observed
+//    order of convergence from the three.
+// 5. Bad scenes: exit code 1, one line naming the entry, nothing written.
+
+#include "run_executable.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  const std::string gear
+    = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/gear_on_shaft.prm";
+
+  const std::string materials = "subsection Fit\n"
+                                "  set Diametral interference = 0.05\n"
+                                "end\n"
+                                "subsection Material\n"
+                                "  subsection Shaft\n"
+                                "    set E = 210000\n"
+                                "    set nu = 0.3\n"
+                                "  end\n"
+                                "  subsection Hub\n"
+                                "    set E = 210000\n"
+                                "    set nu = 0.3\n"
+                                "  end\n"
+                                "end\n"
+                                "subsection Mesh\n"
+                                "  set Global refinements = 1\n"
+                                "end\n";
+
+  const std::string quiet
+    = " --set \"Output/Write vtu=false\" --set \"Output/Write plots=false\" ";
+
+  std::string
+  write_prm(const std::string &name, const std::string &text)
+  {
+    const std::string file = name + ".prm";
+    std::ofstream(file) << text;
+    return file;
+  }
+
+  /** A plain drawing: shaft D 50 x 200, hub D 50-@p D_aA x 50. */
+  std::string
+  plain(const std::string &name, const double D_aA)
+  {
+    std::ostringstream text;
+    text << "subsection Geometry\n"
+         << "  set Joint diameter = 50\n  set Shaft bore diameter = 0\n"
+         << "  set Hub outer diameter = " << D_aA << "\n"
+         << "  set Shaft length = 200\n  set Hub length = 50\nend\n"
+         << materials;
+    return write_prm(name, text.str());
+  }
+
+  struct Result
+  {
+    int                                    exit_code;
+    double                                 mean = 0., at_mid_plane = 0.;
+    std::vector<std::pair<double, double>> profile; // z, p
+    /** p at @p z, linear between the points of contact_pressure.csv. */
+    double
+    at(const double z) const
+    {
+      for (unsigned int i = 1; i < profile.size(); ++i)
+        if (profile[i].first >= z)
+          {
+            const auto &[z0, p0] = profile[i - 1];
+            const auto &[z1, p1] = profile[i];
+            return p0 + (p1 - p0) * (z - z0) / (z1 - z0);
+          }
+      return NAN;
+    }
+  };
+
+  Result
+  run(const std::string &dir, const std::string &arguments)
+  {
+    std::filesystem::remove_all(dir);
+    Result result;
+    result.exit_code
+      = coaxfit_test::run_coaxfit(dir, quiet + arguments).exit_code;
+    std::ifstream in(dir + "/summary.json");
+    if (!in)
+      return result;
+    const auto summary  = nlohmann::json::parse(in);
+    result.mean         = summary["pressure"]["mean"];
+    result.at_mid_plane = summary["pressure"]["at_mid_plane"];
+    std::ifstream csv(dir + "/contact_pressure.csv");
+    std::string   line;
+    std::getline(csv, line);
+    while (std::getline(csv, line))
+      {
+        std::istringstream row(line);
+        std::string        z, p;
+        std::getline(row, z, ',');
+        std::getline(row, p, ',');
+        result.profile.emplace_back(std::stod(z), std::stod(p));
+      }
+    return result;
+  }
+
+  std::string
+  within(const double a, const double b, const double tolerance)
+  {
+    return std::abs(a - b) <= tolerance * std::abs(b) ? "yes" : "NO";
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << std::fixed << std::setprecision(3);
+
+  // 1. Plain cylinders as outlines.
+  {
+    const Result      builder  = run("plain_builder", plain("plain", 100.));
+    const std::string outlines = write_prm(
+      "outlines",
+      "subsection Geometry\n"
+      "  set Shaft section = -100, 0; 100, 0; 100, 50; -100, 50; -100, 0\n"
+      "  set Hub section = -25, 50; 25, 50; 25, 100; -25, 100; -25, 50\n"
+      "end\n"
+        + materials);
+    const Result sections = run("plain_outlines", outlines);
+    std::cout << "plain cylinders, exit codes " << builder.exit_code << ", "
+              << sections.exit_code << '\n';
+    for (const auto &[name, a, b] :
+         {std::make_tuple("p(0)", sections.at_mid_plane, builder.at_mid_plane),
+          std::make_tuple("mean", sections.mean, builder.mean)})
+      std::cout << "  " << name << ": outlines " << a << " MPa, plain builder "
+                << b << " MPa, within 0.1 %: " << within(a, b, 1e-3) << '\n';
+  }
+
+  // 2. The gear example against CalculiX; 3. between the plain hubs.
+  const Result g = run("gear", gear);
+  std::cout << "gear_on_shaft.prm, exit code " << g.exit_code << '\n';
+  std::cout << "  mean: " << g.mean << " MPa, CalculiX 75.455, within 0.5 %: "
+            << within(g.mean, 75.455, 5e-3) << '\n';
+  const std::vector<std::pair<double, double>> reference
+    = {{0., 86.431}, {5., 83.513}, {10., 76.384}, {15., 69.023}, {20., 64.934}};
+  for (const auto &[z, p] : reference)
+    std::cout << "  p(" << z << "): " << g.at(z) << " MPa, CalculiX " << p
+              << ", within 0.5 %: " << within(g.at(z), p, 5e-3) << '\n';
+  const Result d80  = run("hub_80", plain("hub_80", 80.)),
+               d180 = run("hub_180", plain("hub_180", 180.));
+  std::cout << "  mean between the plain hubs D 80 (" << d80.mean
+            << " MPa) and D 180 (" << d180.mean << " MPa): "
+            << (d80.mean < g.mean && g.mean < d180.mean ? "yes" : "NO") << '\n';
+
+  // 4. Refinement study.
+  std::cout << "refinement study of gear_on_shaft.prm (mean, p(5), p(10), "
+               "p(15) in MPa):\n";
+  std::vector<std::vector<double>> levels;
+  for (unsigned int r = 0; r < 3; ++r)
+    {
+      const Result level = run("gear_" + std::to_string(r),
+                               "--set \"Mesh/Global refinements="
+                                 + std::to_string(r) + "\" " + gear);
+      levels.push_back(
+        {level.mean, level.at(5.), level.at(10.), level.at(15.)});
+      std::cout << "  refinements " << r << ": exit " << level.exit_code;
+      for (const double v : levels.back())
+        std::cout << "  " << std::setprecision(4) << v;
+      std::cout << '\n';
+    }
+  std::cout << "  mean: change " << std::scientific << std::setprecision(1)
+            << std::abs(levels[1][0] - levels[0][0]) / levels[2][0] << " then "
+            << std::abs(levels[2][0] - levels[1][0]) / levels[2][0]
+            << " of the value, order " << std::fixed
+            << std::log2(std::abs(levels[1][0] - levels[0][0])
+                         / std::abs(levels[2][0] - levels[1][0]))
+            << '\n';
+
+  // 5. Bad scenes.
+  std::cout << "bad scenes (exit code, lines, output written, message):\n";
+  const std::vector<std::pair<std::string, std::string>> bad = {
+    {"only a hub section", "--set \"Geometry/Shaft section=\" " + gear},
+    {"a plain entry with sections",
+     "--set \"Geometry/Joint diameter=50\" " + gear},
+    {"a hub flush with the shaft end (not symmetric)",
+     "--set \"Geometry/Shaft section=0, 0; 150, 0; 150, 50; 0, 50; 0, 0\" "
+     "--set \"Geometry/Hub section=0, 50; 40, 50; 40, 100; 0, 100; 0, 50\" "
+       + gear},
+    {"a taper",
+     "--set \"Geometry/Shaft section=-50, 0; 50, 0; 50, 52; -50, 48; -50, 0\" "
+     "--set \"Geometry/Hub section=-20, 49.2; 20, 50.8; 20, 100; -20, 100; "
+     "-20, 49.2\" "
+       + gear},
+    {"a relief groove in the bore",
+     "--set \"Geometry/Hub section=-25, 50; -5, 50; -5, 52; 5, 52; 5, 50; "
+     "25, 50; 25, 100; -25, 100; -25, 50\" "
+       + gear},
+    {"an open outline",
+     "--set \"Geometry/Shaft section=-100, 0; 100, 0; 100, 50; -100, 50\" "
+       + gear},
+    {"a hub bore inside the shaft",
+     "--set \"Geometry/Hub section=-25, 49; 25, 49; 25, 100; -25, 100; "
+     "-25, 49\" "
+       + gear},
+    {"a ring on the hub's outer surface as the shaft",
+     "--set \"Geometry/Shaft section=-25, 100; 25, 100; 25, 150; "
+     "-25, 150; -25, 100\" "
+       + gear},
+    {"a cell size beyond the joint length",
+     "--set \"Mesh/Cell size=60\" " + gear},
+    {"a pressure on a section's face",
+     "--set \"Operation/Hub outer pressure=10\" " + gear}};
+  for (const auto &[what, arguments] : bad)
+    {
+      std::filesystem::remove_all("bad");
+      const auto r = coaxfit_test::run_coaxfit("bad", quiet + arguments);
+      std::cout << "  " << what << ": " << r.exit_code << ", " << r.lines
+                << ", " << (std::filesystem::exists("bad") ? "YES" : "no")
+                << ", " << coaxfit_test::gist(r.message, 14) << '\n';
+    }
+}

@@ -243,6 +243,9 @@ namespace coaxfit
 
     bool             full_quad = false;
     std::vector<int> piece_curves; // the gmsh curve of each piece
+    // Curve tag: largest cell on an arc (read by the size callback, which
+    // gmsh calls until the mesh is complete).
+    std::map<int, double> arc_cap;
     run_gmsh_session("parameter " + entry, [&]() {
       // The model, meshed with the recombination @p algorithm (from scratch:
       // clearing a mesh loses the transfinite curves in gmsh 4.11).
@@ -260,9 +263,9 @@ namespace coaxfit
             const Point<2> p = edges[pieces[i].edge].point_at(pieces[i].t0);
             first_point[i]   = gmsh::model::geo::addPoint(p[0], p[1], 0.);
           }
-        std::map<int, double> arc_cap; // curve tag: largest cell on the arc
-        std::vector<int>      single_curves; // one cell each
-        std::vector<int>      loop;
+        arc_cap.clear();
+        std::vector<int> single_curves; // one cell each
+        std::vector<int> loop;
         for (unsigned int i = 0; i < pieces.size(); ++i)
           {
             const OutlineEdge &edge = edges[pieces[i].edge];

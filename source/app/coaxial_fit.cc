@@ -353,7 +353,9 @@ namespace coaxfit
             coupling->converged(),
             coupling->n_steps(),
             coupling->get_active_set().separated_zones(
-              interface->z(), parameters.geometry.contact_length())};
+              interface->z(),
+              parameters.geometry.joint_start(),
+              parameters.geometry.joint_end())};
   }
 
 
@@ -426,9 +428,11 @@ namespace coaxfit
     if (set.enabled() && set.n_separated() > 0
         && set.n_separated() < interface->n_points())
       {
-        const double       length = parameters.geometry.contact_length();
-        const auto         zones  = set.separated_zones(interface->z(), length);
-        double             open   = 0.;
+        const GeometryParameters &g      = parameters.geometry;
+        const double              length = g.modelled_joint_length();
+        const auto                zones
+          = set.separated_zones(interface->z(), g.joint_start(), g.joint_end());
+        double             open = 0.;
         std::ostringstream w;
         w << std::setprecision(4) << "the joint opens over ";
         std::ostringstream where;
@@ -440,7 +444,8 @@ namespace coaxfit
                   << zone.second;
           }
         w << open << " mm of the " << length
-          << " mm half length (z = " << where.str()
+          << (g.whole ? " mm joint (z = " : " mm half length (z = ")
+          << where.str()
           << " mm): no contact pressure there; the FE capacity counts only "
              "the closed part, DIN 7190's uniform pressure assumes it closed";
         list.push_back(w.str());
@@ -474,7 +479,9 @@ namespace coaxfit
     if (parameters.contact.unilateral)
       {
         const auto zones = coupling->get_active_set().separated_zones(
-          interface->z(), parameters.geometry.contact_length());
+          interface->z(),
+          parameters.geometry.joint_start(),
+          parameters.geometry.joint_end());
         report << "  separated zones:";
         if (zones.empty())
           report << " none";
@@ -490,9 +497,11 @@ namespace coaxfit
                << complementarity.max_pressure_gap_relative << std::fixed
                << std::setprecision(4) << '\n';
       }
-    report << "  pressure at z = 0: " << pressure.at_mid_plane
-           << " MPa, mean: " << pressure.mean << " MPa, Lame: " << pressure.lame
-           << " MPa\n"
+    std::ostringstream middle; // "0" for the half model's mid-plane
+    middle << parameters.geometry.joint_middle();
+    report << "  pressure at z = " << middle.str() << ": "
+           << pressure.at_mid_plane << " MPa, mean: " << pressure.mean
+           << " MPa, Lame: " << pressure.lame << " MPa\n"
            << "  pressure min: " << pressure.min
            << " MPa at z = " << pressure.z_of_min
            << " mm, max: " << pressure.max

@@ -85,7 +85,8 @@ namespace coaxfit
 
   std::vector<std::pair<double, double>>
   UnilateralActiveSet::separated_zones(const std::vector<double> &z,
-                                       const double contact_length) const
+                                       const double               start,
+                                       const double               end) const
   {
     std::vector<std::pair<double, double>> zones;
     const unsigned int                     n = contact.size();
@@ -95,10 +96,8 @@ namespace coaxfit
           unsigned int j = i;
           while (j + 1 < n && !contact[j + 1])
             ++j;
-          const double start = (i == 0) ? 0. : 0.5 * (z[i - 1] + z[i]);
-          const double end
-            = (j + 1 == n) ? contact_length : 0.5 * (z[j] + z[j + 1]);
-          zones.emplace_back(start, end);
+          zones.emplace_back((i == 0) ? start : 0.5 * (z[i - 1] + z[i]),
+                             (j + 1 == n) ? end : 0.5 * (z[j] + z[j + 1]));
           i = j;
         }
     return zones;

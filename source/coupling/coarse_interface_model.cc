@@ -81,8 +81,11 @@ namespace coaxfit
     const std::vector<double> &zf = fine.z();
     if (zc.size() < 2 || zf.size() < zc.size())
       return {};
-    const double tolerance = 1e-9 * std::max(zf.back(), zc.back());
-    // Both lists increase from z = 0.
+    // Both lists increase (from z = 0 for a half model).
+    const double tolerance
+      = 1e-9
+        * std::max(
+          {std::abs(zf.front()), std::abs(zf.back()), zc.back() - zc.front()});
     std::vector<unsigned int> index;
     unsigned int              i = 0;
     for (const double z : zc)

@@ -39,7 +39,8 @@ namespace coaxfit
     double        sum = 0.;
     for (const double F : contact_force)
       sum += F;
-    normal_force  = 4. * M_PI * sum;
+    // 2 pi per radian, twice for a half model (its mirror image).
+    normal_force  = 2. * M_PI * parameters.geometry.mirror_factor() * sum;
     mean_pressure = normal_force
                     / (M_PI * 2. * parameters.geometry.R1 * din.joint_length());
     pressure_din = din.pressure();
@@ -89,25 +90,29 @@ namespace coaxfit
     const GeometryParameters &g = parameters.geometry;
     edge_distance
       = parameters.design.edge_distance_for(2. * g.contact_length());
+    // On the mid-plane (the joint's middle of a whole model).
+    const double z_m = g.joint_middle();
     check_points
-      = {{"hub bore", stress_at(hub, hub_field, {g.R1, 0.}), din.hub_bore()},
+      = {{"hub bore", stress_at(hub, hub_field, {g.R1, z_m}), din.hub_bore()},
          {"hub outer surface",
           stress_at(hub,
                     hub_field,
                     {parameters.sections ?
                        parameters.sections->hub_outer_radius_at_plane() :
                        g.R2,
-                     0.}),
+                     z_m}),
           din.hub_outer()},
          {"shaft surface",
-          stress_at(shaft, shaft_field, {g.R1, 0.}),
+          stress_at(shaft, shaft_field, {g.R1, z_m}),
           din.shaft_outer()},
          {g.R0 > 0. ? "shaft bore" : "shaft axis",
-          stress_at(shaft, shaft_field, {g.R0, 0.}),
+          stress_at(shaft, shaft_field, {g.R0, z_m}),
           din.shaft_inner()}};
 
-    // The end of the joint, where the stresses are singular.
-    const double z_corner  = std::min(g.L1, g.L2);
+    // The ends of the joint, where the stresses are singular (one for the
+    // half model).
+    const double z_corner  = g.joint_end();
+    const double z_other   = g.whole ? g.joint_start() : g.joint_end();
     hub_bore_stresses      = stresses_along_radius(hub, hub_field, g.R1);
     shaft_surface_stresses = stresses_along_radius(shaft, shaft_field, g.R1);
     surface_maxima.clear();
@@ -123,7 +128,8 @@ namespace coaxfit
         double corner = std::numeric_limits<double>::max();
         for (const StressState &s : *states)
           {
-            const double distance = std::abs(s.z - z_corner);
+            const double distance
+              = std::min(std::abs(s.z - z_corner), std::abs(s.z - z_other));
             if (distance < corner)
               {
                 corner   = distance;
@@ -135,7 +141,8 @@ namespace coaxfit
                 m.von_mises = s.von_mises();
                 m.z         = s.z;
               }
-            if (std::abs(s.z) <= 0.5 * z_corner
+            if (std::abs(s.z - z_m)
+                  <= 0.25 * g.mirror_factor() * g.modelled_joint_length()
                 && !(s.von_mises() <= m.interior))
               {
                 m.interior   = s.von_mises();

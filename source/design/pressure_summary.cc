@@ -18,6 +18,17 @@ namespace coaxfit
                    operating_loads(parameters))
              .pressure())
   {
+    // A whole model: the point nearest the joint's middle (a vertex).
+    if (parameters.geometry.whole)
+      {
+        const double middle = parameters.geometry.joint_middle();
+        unsigned int best   = 0;
+        for (unsigned int i = 1; i < pressure.size(); ++i)
+          if (std::abs(interface.z()[i] - middle)
+              < std::abs(interface.z()[best] - middle))
+            best = i;
+        at_mid_plane = pressure[best];
+      }
     const auto [lo, hi] = std::minmax_element(pressure.begin(), pressure.end());
     min                 = *lo;
     z_of_min            = interface.z()[lo - pressure.begin()];

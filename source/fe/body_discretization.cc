@@ -46,6 +46,7 @@ namespace coaxfit
     else
       make_body_mesh(triangulation, body_geometry);
     dof_handler.distribute_dofs(fe);
+    collect_interface_points();
 
     constraints.clear();
     const FEValuesExtractors::Scalar u_r(0), u_z(1);
@@ -61,13 +62,38 @@ namespace coaxfit
                                              Functions::ZeroFunction<2>(2),
                                              constraints,
                                              fe.component_mask(u_z));
+    // Without a symmetry plane (a whole section) nothing fixes the axial
+    // rigid motion: u_z = 0 at the joint node nearest the joint's middle.
+    // A frictionless joint passes no axial force, so this reaction is zero
+    // and the stresses do not depend on the choice.
+    axial_pin = numbers::invalid_dof_index;
+    if (mesh_builder && !interface_z_coordinates.empty())
+      {
+        bool has_plane = false;
+        for (const auto &face : triangulation.active_face_iterators())
+          has_plane = has_plane
+                      || (face->at_boundary()
+                          && face->boundary_id() == BoundaryId::symmetry);
+        if (!has_plane)
+          {
+            const double middle = 0.5
+                                  * (interface_z_coordinates.front()
+                                     + interface_z_coordinates.back());
+            unsigned int best = 0;
+            for (unsigned int i = 1; i < interface_z_coordinates.size(); ++i)
+              if (std::abs(interface_z_coordinates[i] - middle)
+                  < std::abs(interface_z_coordinates[best] - middle))
+                best = i;
+            axial_pin = interface_axial_dofs[best];
+            constraints.add_line(axial_pin);
+          }
+      }
     constraints.close();
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
     sparsity_pattern.copy_from(dsp);
     stiffness_matrix.reinit(sparsity_pattern);
-    collect_interface_points();
   }
 
 

@@ -81,28 +81,30 @@ namespace coaxfit
     for (const OutlineCorner &c : shaft_drawn->corners())
       shaft_bore = std::min(shaft_bore, c.diameter);
 
+    z_start = z_lo;
+    // Symmetric about the joint's middle: the half; anything else whole.
     const std::optional<double> plane
       = mirror_plane({shaft_drawn.get(), hub_drawn.get()});
-    if (!plane || std::abs(*plane - 0.5 * (z_lo + z_hi)) > tol)
-      throw InputError(
-        both
-        + "the scene is not symmetric about a plane z = const (the "
-          "mirror image of each section about the joint's middle z = "
-        + number(0.5 * (z_lo + z_hi), 6)
-        + " must be the section itself); this version models symmetric "
-          "scenes as their half, whole models (a hub flush with the shaft "
-          "end, a shoulder beside the hub) are not modelled yet");
-    z_m                   = *plane;
-    const auto shaft_part = half_outline(*shaft_drawn, z_m);
-    const auto hub_part   = half_outline(*hub_drawn, z_m);
-    if (!shaft_part || !hub_part)
-      throw InputError(both + "the half z >= " + number(z_m, 6) + " of the "
-                       + (shaft_part ? "hub's" : "shaft's")
-                       + " section is not one region or a fillet touches "
-                         "the plane of symmetry; such scenes are not "
-                         "modelled yet");
-    shaft_half = std::make_unique<SectionOutline>(shifted(*shaft_part, -z_m));
-    hub_half   = std::make_unique<SectionOutline>(shifted(*hub_part, -z_m));
+    std::optional<SectionOutline> shaft_part, hub_part;
+    if (plane && std::abs(*plane - 0.5 * (z_lo + z_hi)) <= tol)
+      {
+        shaft_part = half_outline(*shaft_drawn, *plane);
+        hub_part   = half_outline(*hub_drawn, *plane);
+      }
+    half = shaft_part && hub_part;
+    if (half)
+      {
+        z_m = *plane;
+        shaft_half
+          = std::make_unique<SectionOutline>(shifted(*shaft_part, -z_m));
+        hub_half = std::make_unique<SectionOutline>(shifted(*hub_part, -z_m));
+      }
+    else
+      {
+        z_m        = 0.;
+        shaft_half = std::make_unique<SectionOutline>(*shaft_drawn);
+        hub_half   = std::make_unique<SectionOutline>(*hub_drawn);
+      }
   }
 
 
@@ -110,6 +112,12 @@ namespace coaxfit
   double
   SectionScene::hub_outer_radius_at_plane() const
   {
+    if (!half)
+      {
+        const double z = z_start + half_length, dz = 1e-6 * half_length;
+        return std::max(radius,
+                        0.5 * mean_outer_diameter(*hub_drawn, z - dz, z + dz));
+      }
     double r = radius;
     for (const OutlineCorner &c : hub_half->corners())
       if (std::abs(c.z) <= 1e-9 * hub_half->extent())
@@ -133,16 +141,26 @@ namespace coaxfit
         sum += h;
         h = std::min(h * grading_ratio, max_cell_size);
       }
-    // The last cell overshoots: shrink all in proportion.
-    const double          scale = half_length / sum;
-    std::vector<Point<2>> vertices;
-    double                z = half_length;
+    // The last cell overshoots: shrink all in proportion. Distances from
+    // the middle of the joint, descending.
+    const double        scale = half_length / sum;
+    std::vector<double> from_middle;
+    double              d = half_length;
     for (unsigned int k = 0; k + 1 < sizes.size(); ++k)
       {
-        z -= sizes[k] * scale;
-        vertices.emplace_back(radius, z);
+        d -= sizes[k] * scale;
+        from_middle.push_back(d);
       }
-    std::reverse(vertices.begin(), vertices.end());
+    const double          middle = joint_start() + (half ? 0. : half_length);
+    std::vector<Point<2>> vertices;
+    if (!half)
+      {
+        for (const double x : from_middle)
+          vertices.emplace_back(radius, middle - x);
+        vertices.emplace_back(radius, middle);
+      }
+    for (auto x = from_middle.rbegin(); x != from_middle.rend(); ++x)
+      vertices.emplace_back(radius, middle + *x);
     return vertices;
   }
 
@@ -153,20 +171,21 @@ namespace coaxfit
                             Triangulation<2>          &hub,
                             const SectionMeshSettings &settings) const
   {
-    const Point<2> middle(radius, 0.), end(radius, half_length);
+    const Point<2> start(radius, joint_start()), end(radius, joint_end());
     const double  h_max = settings.max_cell_size > 0. ? settings.max_cell_size :
                                                         8. * settings.cell_size;
-    TaggedSegment joint{middle, end, BoundaryId::joint};
+    TaggedSegment joint{start, end, BoundaryId::joint};
     joint.vertices
       = joint_vertices(settings.cell_size, settings.grading_ratio, h_max);
-    joint.refine_ends = false;
+    // The middle of a half model's joint is no end.
+    joint.refine_ends = !half;
 
     const auto boundary_of = [&](const SectionOutline &outline) {
       SectionBoundary boundary;
       boundary.segments.push_back(joint);
       const double tol = 1e-9 * outline.extent();
       for (const OutlineEdge &edge : outline.edges())
-        if (!edge.is_arc() && std::abs(edge.start[1]) <= tol
+        if (half && !edge.is_arc() && std::abs(edge.start[1]) <= tol
             && std::abs(edge.end[1]) <= tol)
           {
             TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
@@ -176,8 +195,10 @@ namespace coaxfit
       return boundary;
     };
     SectionMeshSettings local = settings;
-    local.refinement_points   = {end};
-    const auto mesh_both      = [&](const bool full_quad) {
+    local.refinement_points.clear();
+    if (half)
+      local.refinement_points.push_back(end);
+    const auto mesh_both = [&](const bool full_quad) {
       shaft.clear();
       hub.clear();
       local.full_quad = full_quad;

@@ -36,7 +36,7 @@ namespace coaxfit
       if (!(s_top > 0.))
         s_top = 1.;
       const Parameters  &p        = results.parameters;
-      const double       z_corner = p.geometry.contact_length();
+      const double       z_corner = p.geometry.joint_end();
       std::ostringstream gp;
       gp.precision(10);
       gp << "# coaxfit: gnuplot script of this run's plots; run it here "
@@ -46,7 +46,8 @@ namespace coaxfit
          << "\nset output 'contact_pressure.png'\n"
          << "set title 'Contact pressure along the joint (the value at the "
             "end of the joint is singular; axis clipped)'\n"
-         << "set xlabel 'z (mm), from the mid-plane'\n"
+         << (p.geometry.whole ? "set xlabel 'z (mm)'\n" :
+                                "set xlabel 'z (mm), from the mid-plane'\n")
          << "set ylabel 'contact pressure (MPa)'\nset key top left\n"
          << "set yrange [0:" << p_top << "]\n"
          << "plot 'contact_pressure.csv' skip 1 using 1:2 with linespoints "
@@ -66,8 +67,13 @@ namespace coaxfit
          << "set yrange [0:" << std::max(s_top, 1e-300) << "]\n"
          << "set object 1 rect from " << z_corner - d.edge_distance
          << ", graph 0 to " << z_corner + d.edge_distance
-         << ", graph 1 fc rgb '#e8e8e8' fs solid behind\n"
-         << "plot 'hub_bore_stresses.csv' skip 1 using 1:6 with lines lw 2 "
+         << ", graph 1 fc rgb '#e8e8e8' fs solid behind\n";
+      if (p.geometry.whole) // the other end of a whole joint
+        gp << "set object 2 rect from "
+           << p.geometry.joint_start() - d.edge_distance << ", graph 0 to "
+           << p.geometry.joint_start() + d.edge_distance
+           << ", graph 1 fc rgb '#e8e8e8' fs solid behind\n";
+      gp << "plot 'hub_bore_stresses.csv' skip 1 using 1:6 with lines lw 2 "
             "title 'hub bore', \\\n"
          << "     'shaft_surface_stresses.csv' skip 1 using 1:6 with lines "
             "lw 2 title 'shaft surface'";

@@ -138,7 +138,7 @@ namespace coaxfit
         << " MPa at z = " << design_figure(ps.z_of_max)
         << " mm (singular). Separated zones: ";
     const auto zones = results.solver.get_active_set().separated_zones(
-      results.interface.z(), p.geometry.contact_length());
+      results.interface.z(), p.geometry.joint_start(), p.geometry.joint_end());
     if (zones.empty())
       out << "none";
     for (const auto &zone : zones)

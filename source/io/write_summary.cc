@@ -1,3 +1,4 @@
+#include <coaxfit/fe/section_scene.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <cmath>
@@ -32,6 +33,18 @@ namespace coaxfit
                             {"hub_length", 2. * g.L2},
                             {"shaft_length", 2. * g.L1},
                             {"joint_length", 2. * g.contact_length()}});
+      if (p.sections)
+        j["geometry"]["sections"]
+          = {{"shaft", p.drawing.shaft_section},
+             {"hub", p.drawing.hub_section},
+             {"model", g.whole ? "whole" : "half"},
+             {"joint_start", g.whole ? g.joint_start() : -g.contact_length()},
+             {"joint_end", g.whole ? g.joint_end() : g.contact_length()},
+             {"drawing_offset", p.sections->drawing_offset()},
+             {"units",
+              "outlines z, D in mm (drawing); model half: the half z >= 0 "
+              "of the model, drawing z = model z + drawing_offset; "
+              "joint_start, joint_end: model z of the joint's ends (mm)"}};
       j["paper"]         = {{"beta1", g.R0 / g.R1},
                             {"beta2", g.R2 / g.R1},
                             {"l1", g.L1 / g.R1},
@@ -84,11 +97,14 @@ namespace coaxfit
     Json
     contact(const RunResults &results)
     {
-      const UnilateralActiveSet &set = results.solver.get_active_set();
-      const double length = results.parameters.geometry.contact_length();
-      const auto   zones  = set.separated_zones(results.interface.z(), length);
-      double       separated = 0.;
-      Json         zone_list = Json::array();
+      const UnilateralActiveSet &set    = results.solver.get_active_set();
+      const GeometryParameters  &g      = results.parameters.geometry;
+      const double               length = g.modelled_joint_length();
+      const auto zones     = set.separated_zones(results.interface.z(),
+                                             g.joint_start(),
+                                             g.joint_end());
+      double     separated = 0.;
+      Json       zone_list = Json::array();
       for (const auto &zone : zones)
         {
           separated += zone.second - zone.first;

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/fe/section_scene.h>
 #include <coaxfit/parameters/material_library.h>
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/parameter_file.h>
@@ -1054,12 +1055,18 @@ namespace coaxfit
   void
   Parameters::derive_model()
   {
-    geometry.R0 = 0.5 * drawing.shaft_bore_diameter;
-    geometry.R1 = 0.5 * drawing.joint_diameter;
-    geometry.R2 = 0.5 * drawing.hub_outer_diameter;
-    geometry.L1 = 0.5 * drawing.shaft_length;
-    geometry.L2 = 0.5 * drawing.hub_length;
-    geometry.d  = 0.5 * fit_limits.effective();
+    geometry.R0    = 0.5 * drawing.shaft_bore_diameter;
+    geometry.R1    = 0.5 * drawing.joint_diameter;
+    geometry.R2    = 0.5 * drawing.hub_outer_diameter;
+    geometry.L1    = 0.5 * drawing.shaft_length;
+    geometry.L2    = 0.5 * drawing.hub_length;
+    geometry.d     = 0.5 * fit_limits.effective();
+    geometry.whole = sections && !sections->half_model();
+    if (geometry.whole)
+      {
+        geometry.z_joint_start = sections->joint_start();
+        geometry.z_joint_end   = sections->joint_end();
+      }
   }
 
 

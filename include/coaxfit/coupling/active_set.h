@@ -112,7 +112,19 @@ namespace coaxfit
      * ends).
      */
     std::vector<std::pair<double, double>>
-    separated_zones(const std::vector<double> &z, double contact_length) const;
+    separated_zones(const std::vector<double> &z, double contact_length) const
+    {
+      return separated_zones(z, 0., contact_length);
+    }
+
+    /**
+     * The same for a joint modelled from @p start to @p end (a whole
+     * model): a zone at the first point begins at @p start.
+     */
+    std::vector<std::pair<double, double>>
+    separated_zones(const std::vector<double> &z,
+                    double                     start,
+                    double                     end) const;
 
   private:
     const bool        is_enabled;

@@ -88,7 +88,9 @@ namespace coaxfit
      * geometry (make_body_mesh): a section meshed by make_section_mesh or
      * read from a gmsh file. Before setup_system(). The conditions stay
      * those of the ids: u_r = 0 on BoundaryId::axis, u_z = 0 on
-     * BoundaryId::symmetry, wherever the mesh has them.
+     * BoundaryId::symmetry, wherever the mesh has them; a mesh without a
+     * symmetry plane gets u_z = 0 at its joint node nearest the joint's
+     * middle (axial_pin_dof()).
      */
     void
     set_mesh_builder(const MeshBuilder &builder)
@@ -258,7 +260,21 @@ namespace coaxfit
       return dof_handler;
     }
 
-    /** The constraints of the axis and the symmetry plane. */
+    /**
+     * The u_z DoF fixed against the axial rigid motion of a body without
+     * a symmetry plane (a whole section: its joint node nearest the
+     * joint's middle), or numbers::invalid_dof_index.
+     */
+    types::global_dof_index
+    axial_pin_dof() const
+    {
+      return axial_pin;
+    }
+
+    /**
+     * The constraints of the axis and the symmetry plane (and the axial
+     * pin of a whole section).
+     */
     const AffineConstraints<double> &
     get_constraints() const
     {
@@ -329,6 +345,7 @@ namespace coaxfit
     std::vector<Point<2>>                points;
     Vector<double>                       weights;
     std::vector<Tensor<1, 2>>            normals;
+    types::global_dof_index              axial_pin = numbers::invalid_dof_index;
   };
 } // namespace coaxfit
 

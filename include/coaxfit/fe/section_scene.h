@@ -17,22 +17,24 @@ namespace coaxfit
   /**
    * A scene of two bodies drawn as sections (`Geometry/Shaft section`,
    * `Geometry/Hub section`): both outlines checked, where they meet (the
-   * joint), the plane about which the scene is symmetric, and the half
+   * joint), the plane about which the scene is symmetric, and the
    * sections the model meshes.
    *
-   * This version models scenes that are symmetric about a plane z = z_m
-   * and whose joint is one cylinder: the half z >= z_m of each section,
-   * shifted so that the plane is z = 0 of the model (u_z = 0 there, as the
-   * plain cylinders have it), the joint from z = 0 to its half length.
-   * Any other scene (a hub flush with the shaft end, a taper, a joint of
-   * several pieces or against a shoulder) is refused with one line naming
-   * both entries; see doc/real_parts.md for what comes next.
+   * This version models scenes whose joint is one cylinder. A scene
+   * symmetric about a plane z = z_m is modelled as its half z >= z_m of
+   * each section, shifted so that the plane is z = 0 of the model (u_z = 0
+   * there, as the plain cylinders have it), the joint from z = 0 to its
+   * half length. Any other scene (a hub flush with the shaft end, a
+   * shoulder beside the hub) is modelled whole in the drawing's
+   * coordinates, each body's axial rigid motion fixed at its joint node
+   * nearest the joint's middle (BodyDiscretization). A taper, a joint of
+   * several pieces or against a shoulder face is refused with one line
+   * naming both entries; see doc/real_parts.md for what comes next.
    *
    * Both bodies are meshed by gmsh with the same vertices on the joint
-   * (joint_vertices(): graded towards its ends from the cell size), so
-   * that their joint nodes coincide and the coupling takes the exact
-   * index map; if one mesh needs gmsh's full-quad subdivision, both get
-   * it (make_meshes()).
+   * (joint_vertices(): graded towards its ends from the cell size, a
+   * vertex at the middle of a whole joint), so that their joint nodes
+   * coincide and the coupling takes the exact index map.
    */
   class SectionScene
   {
@@ -50,11 +52,36 @@ namespace coaxfit
       return shaft ? *shaft_drawn : *hub_drawn;
     }
 
-    /** The modelled half (z >= 0 of the model) of the shaft or the hub. */
+    /**
+     * The modelled section of the shaft or the hub: the half z >= 0 of the
+     * model, or the drawn one of a whole model.
+     */
     const SectionOutline &
     modelled(bool shaft) const
     {
       return shaft ? *shaft_half : *hub_half;
+    }
+
+    /** Whether the model is the half of a symmetric scene. */
+    bool
+    half_model() const
+    {
+      return half;
+    }
+
+    /**
+     * Model z of the joint's ends (mm): 0 and l_F / 2 for the half model,
+     * the drawing's z for a whole one.
+     */
+    double
+    joint_start() const
+    {
+      return half ? 0. : z_start;
+    }
+    double
+    joint_end() const
+    {
+      return half ? half_length : z_start + 2. * half_length;
     }
 
     /** Joint radius R_F (mm). */
@@ -72,8 +99,8 @@ namespace coaxfit
     }
 
     /**
-     * Drawing z of the model's z = 0: the symmetry plane z_m (a drawing
-     * z is model z + drawing_offset()).
+     * Drawing z of the model's z = 0: the symmetry plane z_m of a half
+     * model, 0 for a whole one (a drawing z is model z + drawing_offset()).
      */
     double
     drawing_offset() const
@@ -102,9 +129,10 @@ namespace coaxfit
     }
 
     /**
-     * The largest radius of the hub's section on the plane of symmetry
-     * (mm): where its outer surface crosses the mid-plane (the rim of a
-     * gear hub), the point of the FE's "hub outer surface" figures.
+     * The largest radius of the hub's section on the plane of symmetry,
+     * or on the plane through the middle of a whole joint (mm): where its
+     * outer surface crosses it (the rim of a gear hub), the point of the
+     * FE's "hub outer surface" figures.
      */
     double
     hub_outer_radius_at_plane() const;
@@ -117,10 +145,11 @@ namespace coaxfit
     }
 
     /**
-     * The joint's vertices in the model (r = R_F, 0 < z < l_F / 2,
+     * The joint's vertices in the model between its ends (r = R_F,
      * ascending): the first cell at each end of the joint has size
      * @p cell_size, sizes grow by @p grading_ratio towards the middle up
-     * to @p max_cell_size, and the half joint is filled exactly.
+     * to @p max_cell_size, each half of the joint filled exactly (a whole
+     * joint has a vertex at its middle).
      */
     std::vector<Point<2>>
     joint_vertices(double cell_size,
@@ -145,6 +174,8 @@ namespace coaxfit
     double                          radius         = 0.;
     double                          half_length    = 0.;
     double                          z_m            = 0.;
+    double                          z_start        = 0.; ///< drawing
+    bool                            half           = true;
     double                          hub_mean_outer = 0.;
     double                          shaft_bore     = 0.;
     double                          shaft_extent   = 0.;

@@ -120,11 +120,56 @@ namespace coaxfit
     void
     validate() const;
 
-    /** Contact length min(L1, L2) in mm. */
+    /**
+     * Whether the whole joint is modelled (sections without a plane of
+     * symmetry): the joint runs from z_joint_start to z_joint_end in the
+     * drawing's coordinates; otherwise the half z >= 0 from the
+     * mid-plane z = 0 to contact_length().
+     */
+    bool   whole         = false;
+    double z_joint_start = 0.; ///< whole model: drawing z of one joint end
+    double z_joint_end   = 0.; ///< whole model: drawing z of the other
+
+    /** Contact length min(L1, L2) in mm: half the joint length. */
     double
     contact_length() const
     {
       return std::min(L1, L2);
+    }
+
+    /** Model z (mm) where the modelled joint starts: 0 for the half. */
+    double
+    joint_start() const
+    {
+      return whole ? z_joint_start : 0.;
+    }
+
+    /** Model z (mm) where the modelled joint ends. */
+    double
+    joint_end() const
+    {
+      return whole ? z_joint_end : contact_length();
+    }
+
+    /** Model z (mm) of the middle of the joint: 0 for the half. */
+    double
+    joint_middle() const
+    {
+      return whole ? 0.5 * (z_joint_start + z_joint_end) : 0.;
+    }
+
+    /** Length of the joint the model holds (mm): half or whole. */
+    double
+    modelled_joint_length() const
+    {
+      return joint_end() - joint_start();
+    }
+
+    /** The factor from the model's joint to the whole: 2 for the half. */
+    double
+    mirror_factor() const
+    {
+      return whole ? 1. : 2.;
     }
   };
 

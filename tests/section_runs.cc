@@ -155,6 +155,17 @@ main()
       "end\n"
         + materials);
     const Result sections = run("plain_outlines", outlines);
+    // No plane of symmetry (the shaft 0.001 mm longer on one side): the
+    // whole model of the same scene.
+    const std::string lopsided = write_prm(
+      "lopsided",
+      "subsection Geometry\n"
+      "  set Shaft section = -100, 0; 100.001, 0; 100.001, 50; -100, 50; "
+      "-100, 0\n"
+      "  set Hub section = -25, 50; 25, 50; 25, 100; -25, 100; -25, 50\n"
+      "end\n"
+        + materials);
+    const Result whole = run("plain_whole", lopsided);
     std::cout << "plain cylinders, exit codes " << builder.exit_code << ", "
               << sections.exit_code << '\n';
     for (const auto &[name, a, b] :
@@ -162,6 +173,18 @@ main()
           std::make_tuple("mean", sections.mean, builder.mean)})
       std::cout << "  " << name << ": outlines " << a << " MPa, plain builder "
                 << b << " MPa, within 0.1 %: " << within(a, b, 1e-3) << '\n';
+    std::ifstream in("plain_whole/summary.json");
+    std::cout << "  modelled whole (no plane of symmetry): "
+              << (nlohmann::json::parse(in)["geometry"]["sections"]["model"]
+                      == "whole" ?
+                    "yes" :
+                    "NO")
+              << ", exit code " << whole.exit_code << '\n';
+    for (const auto &[name, a, b] :
+         {std::make_tuple("p(0)", whole.at_mid_plane, sections.at_mid_plane),
+          std::make_tuple("mean", whole.mean, sections.mean)})
+      std::cout << "  " << name << ": whole " << a << " MPa, half " << b
+                << " MPa, within 1e-4: " << within(a, b, 1e-4) << '\n';
   }
 
   // 2. The gear example against CalculiX; 3. between the plain hubs.
@@ -198,6 +221,33 @@ main()
                                               {35., 31.260}})
     std::cout << "  p(" << z << "): " << f.at(z) << " MPa, CalculiX " << p
               << ", within 0.5 %: " << within(f.at(z), p, 5e-3) << '\n';
+
+  // The other section examples: a relief groove in the hub's faces lowers
+  // the peak at the joint's end (against the plain hub at the same cell
+  // size); a shoulder 5 mm beside the hub leaves the middle of the joint
+  // as it is (the whole model against the plain half).
+  {
+    const Result groove = run("relief_groove",
+                              std::string(COAXFIT_SOURCE_DIR)
+                                + "/prm/examples/relief_groove.prm");
+    const Result plain_hub
+      = run("plain_hub", "--set \"Mesh/Cell size=0.5\" outlines.prm");
+    const auto peak = [](const Result &r) { return r.profile.back().second; };
+    std::cout << "relief_groove.prm: exit " << groove.exit_code
+              << ", pressure at the joint's end " << peak(groove)
+              << " MPa, below the plain hub's " << peak(plain_hub)
+              << " MPa: " << (peak(groove) < peak(plain_hub) ? "yes" : "NO")
+              << '\n';
+    const Result shoulder = run("shoulder",
+                                std::string(COAXFIT_SOURCE_DIR)
+                                  + "/prm/examples/shoulder_beside_hub.prm");
+    std::cout << "shoulder_beside_hub.prm: exit " << shoulder.exit_code
+              << ", p(0) " << shoulder.at_mid_plane
+              << " MPa, within 0.1 % of the plain half's "
+              << plain_hub.at_mid_plane << ": "
+              << within(shoulder.at_mid_plane, plain_hub.at_mid_plane, 1e-3)
+              << '\n';
+  }
 
   // Staggered against monolithic.
   for (const auto &[name, staggered, file] :
@@ -264,6 +314,10 @@ main()
     {"a relief groove in the bore",
      "--set \"Geometry/Hub section=-25, 50; -5, 50; -5, 52; 5, 52; 5, 50; "
      "25, 50; 25, 100; -25, 100; -25, 50\" "
+       + gear},
+    {"a rounded bore edge (a fillet at the joint's end)",
+     "--set \"Geometry/Hub section=-25, 50, 3; 25, 50, 3; 25, 100; "
+     "-25, 100; -25, 50, 3\" "
        + gear},
     {"an open outline",
      "--set \"Geometry/Shaft section=-100, 0; 100, 0; 100, 50; -100, 50\" "

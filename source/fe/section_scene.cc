@@ -70,6 +70,24 @@ namespace coaxfit
       throw InputError(both
                        + "the shaft's section lies outside the hub's at "
                          "the joint; the shaft must be the inner body");
+    // A fillet that begins where the joint ends: contact would spread onto
+    // it (its gap opens with the square of the distance), which a joint
+    // on the straight part alone cannot represent.
+    for (const SectionOutline *outline : {shaft_drawn.get(), hub_drawn.get()})
+      for (const OutlineEdge &edge : outline->edges())
+        if (edge.is_arc())
+          for (const Point<2> &end : {joint.start, joint.end})
+            if (std::min(edge.start.distance(end), edge.end.distance(end))
+                <= tol)
+              throw InputError(
+                "parameter " + outline->entry() + ": a fillet (R "
+                + number(edge.radius, 6) + ") begins at the end of the "
+                + "joint (z = " + number(end[1], 6)
+                + ", D = " + number(2. * end[0], 6)
+                + "): contact on a rounded edge is not modelled yet (the "
+                  "joint would end at its tangent point as at a sharp "
+                  "edge, with a wrong pressure peak); draw the edge sharp "
+                  "or chamfered");
     radius            = joint.start[0];
     const double z_lo = std::min(joint.start[1], joint.end[1]);
     const double z_hi = std::max(joint.start[1], joint.end[1]);

@@ -122,18 +122,27 @@ namespace coaxfit
           {"shaft surface", &shaft_surface_stresses}})
       {
         SurfaceMaximum m;
-        m.name        = name;
-        m.von_mises   = FitDesign::unknown; // none outside the band
-        m.interior    = FitDesign::unknown;
-        double corner = std::numeric_limits<double>::max();
+        m.name      = name;
+        m.von_mises = FitDesign::unknown; // none outside the band
+        m.interior  = FitDesign::unknown;
+        // The value at each end (the point nearest it); the larger is the
+        // corner's (a whole model's other end may be flush, not singular).
+        double nearest[2] = {std::numeric_limits<double>::max(),
+                             std::numeric_limits<double>::max()};
+        double at_end[2]  = {0., 0.};
         for (const StressState &s : *states)
           {
             const double distance
               = std::min(std::abs(s.z - z_corner), std::abs(s.z - z_other));
-            if (distance < corner)
+            for (const unsigned int e : {0u, 1u})
               {
-                corner   = distance;
-                m.corner = s.von_mises();
+                const double to_end
+                  = std::abs(s.z - (e == 0 ? z_corner : z_other));
+                if (to_end < nearest[e])
+                  {
+                    nearest[e] = to_end;
+                    at_end[e]  = s.von_mises();
+                  }
               }
             if (distance >= edge_distance
                 && !(s.von_mises() <= m.von_mises)) // NaN: the first
@@ -149,6 +158,7 @@ namespace coaxfit
                 m.interior_z = s.z;
               }
           }
+        m.corner = std::fmax(at_end[0], at_end[1]);
         surface_maxima.push_back(m);
       }
 

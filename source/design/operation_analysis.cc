@@ -71,8 +71,12 @@ namespace coaxfit
   OperationAnalysis::OperationAnalysis(const Parameters &parameters,
                                        StateSolver      &fit)
     : has_loads(parameters.operation.has_loads())
+    , joint_name(parameters.geometry.whole ? "joint" : "half joint")
   {
-    operation = state_figures("operation", fit.solved_state());
+    std::ostringstream middle;
+    middle << "z = " << parameters.geometry.joint_middle();
+    middle_name = middle.str();
+    operation   = state_figures("operation", fit.solved_state());
     if (has_loads)
       assembly
         = state_figures("assembly", fit.solve_state(at_assembly(parameters)));
@@ -116,7 +120,7 @@ namespace coaxfit
              << operation.pressure_mean << " MPa";
         if (operation.separated_length > 0.)
           line << ", separated over " << operation.separated_length
-               << " mm of the half joint";
+               << " mm of the " << joint_name;
         if (std::isfinite(safety))
           line << ", safety against slip " << safety;
       }
@@ -381,7 +385,7 @@ namespace coaxfit
     s << "  operating conditions: " << conditions << '\n';
     s << "  operation:" << std::setw(50) << "assembly" << std::setw(12)
       << "in service" << '\n';
-    row("joint pressure at z = 0 (MPa)",
+    row("joint pressure at " + middle_name + " (MPa)",
         assembly.pressure_mid_plane,
         operation.pressure_mid_plane);
     row("joint pressure, mean (MPa)",
@@ -408,7 +412,7 @@ namespace coaxfit
     row("safety against yield, shaft",
         assembly.safety_yield_shaft,
         operation.safety_yield_shaft);
-    row("separated length of the half joint (mm)",
+    row("separated length of the " + joint_name + " (mm)",
         assembly.separated_length,
         operation.separated_length);
     if (loosening_note.empty())

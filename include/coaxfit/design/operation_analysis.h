@@ -141,6 +141,10 @@ namespace coaxfit
      */
     bool        holds = true;
     std::string verdict; ///< one line: why it holds or not
+    /** "half joint" (a half model) or "joint" (a whole one). */
+    std::string joint_name = "half joint";
+    /** Where at_mid_plane is: "z = 0", or the middle of a whole joint. */
+    std::string middle_name = "z = 0";
 
     /**
      * The console table of the two states and the figures above (without

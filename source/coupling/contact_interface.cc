@@ -40,7 +40,13 @@ namespace coaxfit
         scale     = std::max(scale, std::abs(d_load[i]));
       }
     const unsigned int n = z_coordinates.size();
-    const double scale   = z_coordinates.empty() ? 1. : z_coordinates.back();
+    // The size of the joint's z range (a whole model's z may end at 0).
+    const double scale
+      = z_coordinates.empty() ?
+          1. :
+          std::max({std::abs(z_coordinates.front()),
+                    std::abs(z_coordinates.back()),
+                    z_coordinates.back() - z_coordinates.front()});
     if (n < 2 || hub.n_interface_points() != n)
       throw std::logic_error("the contact surfaces of shaft and hub do not "
                              "have matching points");

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace coaxfit
 {
@@ -118,6 +119,11 @@ namespace coaxfit
       = GridTools::find_active_cell_around_point(MappingQ1<2>(),
                                                  body.get_dof_handler(),
                                                  point);
+    if (found.first == body.get_dof_handler().end())
+      throw std::logic_error("stress_at: the point (r = "
+                             + std::to_string(point[0])
+                             + ", z = " + std::to_string(point[1])
+                             + ") is not in the " + body.name() + "'s mesh");
     const Point<2> unit = GeometryInfo<2>::project_to_unit_cell(found.second);
     return stresses_in_cell(body, solution, found.first, {unit})[0];
   }

@@ -46,8 +46,13 @@ namespace coaxfit
           const unsigned int parts = e.is_arc() ? 16 : 1;
           for (unsigned int k = 0; k < parts; ++k)
             {
-              const Point<2> a = e.point_at(double(k) / parts);
-              const Point<2> b = e.point_at(double(k + 1) / parts);
+              // The ends exactly (point_at(1) may miss the end by
+              // round-off, and a vertex must be on one side for both of
+              // its edges).
+              const Point<2> a
+                = k == 0 ? e.start : e.point_at(double(k) / parts);
+              const Point<2> b
+                = k + 1 == parts ? e.end : e.point_at(double(k + 1) / parts);
               if ((a[1] > p[1]) != (b[1] > p[1]))
                 {
                   const double r

@@ -319,68 +319,73 @@ namespace coaxfit
         gmsh::model::mesh::generate(1);
         check_gmsh_error("parameter " + entry);
       };
+      const bool has_fixed
+        = std::any_of(pieces.begin(), pieces.end(), [](const Piece &p) {
+            return p.single;
+          });
       // Blossom recombines all triangles only if the number of boundary
       // cells is even: if it is odd, the coarsest piece that is not fixed
-      // gets one cell more (uniform on that piece).
-      const unsigned int none = numbers::invalid_unsigned_int;
-      mesh_with(settings.full_quad ? 3 : 1, none, 0); // 1: Blossom
-      if (!settings.full_quad)
+      // gets one cell more (uniform on that piece). True if the mesh is
+      // all quadrilaterals.
+      const unsigned int none    = numbers::invalid_unsigned_int;
+      const auto         attempt = [&]() {
+        mesh_with(settings.full_quad && !has_fixed ? 3 : 1, none, 0);
+        if (!settings.full_quad || has_fixed)
+          {
+            std::size_t  total = 0, best_cells = 0;
+            unsigned int best      = none;
+            double       best_size = 0.;
+            for (unsigned int i = 0; i < pieces.size(); ++i)
+              {
+                std::vector<int>                      types;
+                std::vector<std::vector<std::size_t>> tags, nodes;
+                gmsh::model::mesh::getElements(
+                  types, tags, nodes, 1, piece_curves[i]);
+                const std::size_t cells = tags.empty() ? 0 : tags[0].size();
+                total += cells;
+                const OutlineEdge &edge = edges[pieces[i].edge];
+                const double       size
+                  = (pieces[i].t1 - pieces[i].t0) * edge.length() / cells;
+                if (!pieces[i].single && !edge.is_arc() && size > best_size)
+                  {
+                    best       = i;
+                    best_cells = cells;
+                    best_size  = size;
+                  }
+              }
+            if (total % 2 == 1 && best != none)
+              {
+                gmsh::model::remove();
+                mesh_with(1, best, static_cast<int>(best_cells) + 2);
+              }
+          }
+        gmsh::model::mesh::generate(2);
+        check_gmsh_error("parameter " + entry);
+        std::vector<int>                      types;
+        std::vector<std::vector<std::size_t>> tags, nodes;
+        gmsh::model::mesh::getElements(types, tags, nodes, 2, -1);
+        return std::all_of(types.begin(), types.end(), [](const int t) {
+          return t == 3;
+        });
+      };
+      // With fixed pieces, full quadrilaterals come from splitting every
+      // cell of the mixed mesh (gmsh's subdivision: each boundary cell at
+      // its middle, so that two bodies split alike still match); without,
+      // from the full-quad variant of Blossom.
+      const bool quadrilaterals = attempt();
+      full_quad                 = settings.full_quad || !quadrilaterals;
+      if (full_quad && has_fixed)
         {
-          std::size_t  total = 0, best_cells = 0;
-          unsigned int best      = none;
-          double       best_size = 0.;
-          for (unsigned int i = 0; i < pieces.size(); ++i)
-            {
-              std::vector<int>                      types;
-              std::vector<std::vector<std::size_t>> tags, nodes;
-              gmsh::model::mesh::getElements(
-                types, tags, nodes, 1, piece_curves[i]);
-              const std::size_t cells = tags.empty() ? 0 : tags[0].size();
-              total += cells;
-              const OutlineEdge &edge = edges[pieces[i].edge];
-              const double       size
-                = (pieces[i].t1 - pieces[i].t0) * edge.length() / cells;
-              if (!pieces[i].single && !edge.is_arc() && size > best_size)
-                {
-                  best       = i;
-                  best_cells = cells;
-                  best_size  = size;
-                }
-            }
-          if (total % 2 == 1 && best != none)
-            {
-              gmsh::model::remove();
-              mesh_with(1, best, static_cast<int>(best_cells) + 2);
-            }
+          gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
+          gmsh::model::mesh::refine();
+          check_gmsh_error("parameter " + entry);
         }
-      gmsh::model::mesh::generate(2);
-      check_gmsh_error("parameter " + entry);
-
-      std::vector<int>                      types;
-      std::vector<std::vector<std::size_t>> tags, nodes;
-      gmsh::model::mesh::getElements(types, tags, nodes, 2, -1);
-      full_quad = settings.full_quad;
-      if (full_quad || std::any_of(types.begin(), types.end(), [](const int t) {
-            return t != 3;
-          }))
+      else if (full_quad && !settings.full_quad)
         {
-          // Blossom left triangles: its full-quad variant splits them
-          // (gmsh cannot split cells of fixed pieces).
-          if (!full_quad)
-            {
-              if (std::any_of(pieces.begin(), pieces.end(), [](const Piece &p) {
-                    return p.single;
-                  }))
-                throw InputError("parameter " + entry
-                                 + ": gmsh did not mesh the section into "
-                                   "quadrilaterals alone; try another "
-                                   "Mesh/Cell size");
-              gmsh::model::remove();
-              mesh_with(3, none, 0);
-              gmsh::model::mesh::generate(2);
-              check_gmsh_error("parameter " + entry);
-            }
-          full_quad = true;
+          gmsh::model::remove();
+          mesh_with(3, none, 0);
+          gmsh::model::mesh::generate(2);
+          check_gmsh_error("parameter " + entry);
         }
       transfer_gmsh_mesh(triangulation,
                          curves,

@@ -28,6 +28,49 @@ namespace coaxfit
       return SectionOutline(corners, outline.entry());
     }
 
+    /**
+     * @p outline with every corner within @p tol of the cylinder of radius
+     * @p r moved onto it.
+     */
+    SectionOutline
+    snapped(const SectionOutline &outline, const double r, const double tol)
+    {
+      std::vector<OutlineCorner> corners = outline.corners();
+      for (OutlineCorner &c : corners)
+        if (std::abs(0.5 * c.diameter - r) <= tol)
+          c.diameter = 2. * r;
+      corners.push_back(corners.front()); // closed explicitly
+      return SectionOutline(corners, outline.entry());
+    }
+
+    /**
+     * @p pieces with neighbours on one straight line joined (a corner of
+     * an outline on the joint splits it without changing it).
+     */
+    std::vector<JointPiece>
+    merged(std::vector<JointPiece> pieces, const double tol)
+    {
+      std::sort(pieces.begin(),
+                pieces.end(),
+                [](const JointPiece &a, const JointPiece &b) {
+                  return std::min(a.start[1], a.end[1])
+                         < std::min(b.start[1], b.end[1]);
+                });
+      std::vector<JointPiece> result;
+      for (JointPiece piece : pieces)
+        {
+          if (piece.start[1] > piece.end[1])
+            std::swap(piece.start, piece.end);
+          if (!result.empty() && result.back().end.distance(piece.start) <= tol
+              && (result.back().normal - piece.normal).norm() <= 1e-9
+              && std::abs(result.back().start[0] - piece.end[0]) <= tol)
+            result.back().end = piece.end;
+          else
+            result.push_back(piece);
+        }
+      return result;
+    }
+
     /** Smallest and largest z of the corners of @p outline. */
     std::pair<double, double>
     axial_range(const SectionOutline &outline)
@@ -51,9 +94,22 @@ namespace coaxfit
     , hub_drawn(std::make_unique<SectionOutline>(
         SectionOutline::parse(hub_text, hub_entry)))
   {
-    const std::vector<JointPiece> pieces = find_joint(*shaft_drawn, *hub_drawn);
-    const double                  tol
+    const double tol
       = 1e-6 * std::max(shaft_drawn->extent(), hub_drawn->extent());
+    std::vector<JointPiece> pieces
+      = merged(find_joint(*shaft_drawn, *hub_drawn), tol);
+    // Sections that meet within the drawing tolerance: corners on the
+    // joint's cylinder moved onto it exactly, so that both meshes have it.
+    if (pieces.size() == 1
+        && std::abs(pieces[0].start[0] - pieces[0].end[0]) <= tol)
+      {
+        const double r = pieces[0].start[0];
+        shaft_drawn
+          = std::make_unique<SectionOutline>(snapped(*shaft_drawn, r, tol));
+        hub_drawn
+          = std::make_unique<SectionOutline>(snapped(*hub_drawn, r, tol));
+        pieces = merged(find_joint(*shaft_drawn, *hub_drawn), tol);
+      }
     if (pieces.size() != 1)
       throw InputError(both + "the sections meet in "
                        + std::to_string(pieces.size())
@@ -195,6 +251,41 @@ namespace coaxfit
     TaggedSegment joint{start, end, BoundaryId::joint};
     joint.vertices
       = joint_vertices(settings.cell_size, settings.grading_ratio, h_max);
+    // A corner of either outline inside the joint (on a straight line)
+    // is a vertex of its mesh: it must be one of both, replacing the
+    // nearest vertex if that is close.
+    {
+      const double tol
+        = 1e-9 * std::max(modelled(true).extent(), modelled(false).extent());
+      std::vector<double> z;
+      for (const Point<2> &v : joint.vertices)
+        z.push_back(v[1]);
+      for (const bool shaft_side : {true, false})
+        for (const OutlineCorner &c : modelled(shaft_side).corners())
+          if (std::abs(0.5 * c.diameter - radius) <= tol
+              && c.z > joint_start() + tol && c.z < joint_end() - tol)
+            {
+              std::vector<double> all = {joint_start()};
+              all.insert(all.end(), z.begin(), z.end());
+              all.push_back(joint_end());
+              const auto   next = std::lower_bound(all.begin(), all.end(), c.z);
+              const double cell = *next - *(next - 1);
+              auto         near = std::min_element(z.begin(),
+                                           z.end(),
+                                           [&](const double a, const double b) {
+                                             return std::abs(a - c.z)
+                                                    < std::abs(b - c.z);
+                                           });
+              if (near != z.end() && std::abs(*near - c.z) < 0.3 * cell)
+                *near = c.z;
+              else
+                z.insert(std::lower_bound(z.begin(), z.end(), c.z), c.z);
+            }
+      std::sort(z.begin(), z.end());
+      joint.vertices.clear();
+      for (const double zi : z)
+        joint.vertices.emplace_back(radius, zi);
+    }
     // The middle of a half model's joint is no end.
     joint.refine_ends = !half;
 

@@ -1008,7 +1008,9 @@ namespace coaxfit
             "0 <= distance < l_F / 2 = " + number(geometry.contact_length())
               + " mm (half the joint length: the maxima are taken between "
                 "the mid-plane and the band at the end of the joint)");
-    mesh.validate();
+    // Axial and radial cells are those of the plain cylinders.
+    if (!drawing.has_sections())
+      mesh.validate();
     if (solver.method == SolverMethod::monolithic
         && solver.linear_solver == LinearSolverType::amg)
       throw InputError("parameter Solver/Linear solver = amg: allowed with "
@@ -1363,6 +1365,15 @@ namespace coaxfit
     // be reported as not used when the file is run again.
     if (!parameters.fit.iso_fit.empty())
       prm_lines = replace_prm_line(prm_lines, "Diametral interference", "");
+    // With sections the plain geometry entries are derived, and the file
+    // would be refused if it gave them.
+    if (parameters.drawing.has_sections())
+      for (const std::string name : {"Joint diameter",
+                                     "Shaft bore diameter",
+                                     "Hub outer diameter",
+                                     "Hub length",
+                                     "Shaft length"})
+        prm_lines = replace_prm_line(prm_lines, name, "");
     parameters.used_prm = "# coaxfit: the parameters of this run (file '"
                           + printable + "' with the --set overrides)\n"
                           + prm_lines;

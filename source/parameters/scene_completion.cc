@@ -167,11 +167,31 @@ namespace coaxfit
       p.sections                    = scene;
       const double l_F              = scene->joint_length();
       require(p.mesh.cell_size == 0.
-                || (p.mesh.cell_size >= 1e-6 * l_F && p.mesh.cell_size <= l_F),
+                || (p.mesh.cell_size >= 1e-3 * l_F
+                    && p.mesh.cell_size <= 0.25 * l_F),
               "Mesh/Cell size",
               p.mesh.cell_size,
-              "0 (l_F / 100) or 1e-6 l_F to l_F (l_F = " + number(l_F)
+              "0 (l_F / 100) or l_F / 1000 to l_F / 4 (l_F = " + number(l_F)
                 + " mm, the joint length of the sections)");
+      require(p.mesh.grading_ratio <= 3.,
+              "Mesh/Grading ratio",
+              p.mesh.grading_ratio,
+              "1 to 3 for sections (the cells grow by it from the joint's "
+              "ends and corners)");
+      // The cells far from the joint are at most 8 cell sizes: refuse
+      // what would take gmsh minutes (its quadrilateral pairing is
+      // superlinear).
+      const double h = (p.mesh.cell_size > 0. ? p.mesh.cell_size : 0.01 * l_F);
+      for (const bool shaft : {true, false})
+        {
+          const SectionOutline &s = scene->drawn(shaft);
+          if (s.area() / (64. * h * h) > 50000.)
+            throw InputError(
+              "parameter Mesh/Cell size = " + number(h) + " mm would mesh "
+              + s.entry() + " (area " + number(s.area())
+              + " mm^2) into more than 50000 cells; use at least "
+              + number(std::sqrt(s.area() / (64. * 50000.)), 3) + " mm");
+        }
       const OperationParameters &o = p.operation;
       for (const auto &[name, value] :
            {std::make_pair("Operation/Shaft bore pressure",
@@ -232,7 +252,24 @@ namespace coaxfit
               "it as steel ("
             + number(p.design.friction_coefficient)
             + "); give its Name or the coefficient");
-    p.drawing.validate();
+    if (p.drawing.has_sections())
+      {
+        // The plain entries are derived: say which sections they come from.
+        try
+          {
+            p.drawing.validate();
+          }
+        catch (const InputError &e)
+          {
+            throw InputError(
+              "parameters Geometry/Shaft section and Geometry/Hub section "
+              "give a scene outside the allowed range (as the plain "
+              "cylinders of their joint: "
+              + std::string(e.what()) + ")");
+          }
+      }
+    else
+      p.drawing.validate();
     // A selection chooses the fit: Fit/ISO fit and Fit/Case are not used
     // (the interference given only starts its solves when DIN 7190's ends
     // cannot).

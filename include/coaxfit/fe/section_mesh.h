@@ -96,9 +96,10 @@ namespace coaxfit
     std::vector<Point<2>> refinement_points; ///< (r, z), mm
     unsigned int          global_refinements = 0;
     /**
-     * Split every cell of gmsh's recombined mesh into four quadrilaterals
-     * (gmsh's full-quad variant), which halves every boundary cell,
-     * whether or not the Blossom recombination alone leaves a triangle.
+     * Split every cell of gmsh's recombined mesh into quadrilaterals
+     * (gmsh's full-quad variant, or its subdivision where tagged segments
+     * have fixed vertices), which halves every boundary cell, whether or
+     * not the Blossom recombination alone leaves a triangle.
      */
     bool full_quad = false;
   };
@@ -116,9 +117,10 @@ namespace coaxfit
    * lie on the outline, the settings are out of range, gmsh fails or the
    * mesh is not all quadrilaterals.
    *
-   * @return whether the full-quad variant was used (asked for, or because
-   * Blossom left a triangle): then every boundary cell, also of a segment
-   * with fixed vertices, was halved.
+   * @return whether every cell was split (asked for, or because Blossom
+   * left a triangle): then every boundary cell, also of a segment with
+   * fixed vertices, was halved at its middle, so that two sections with
+   * the same fixed vertices match only if both were split.
    */
   bool
   make_section_mesh(Triangulation<2>          &triangulation,

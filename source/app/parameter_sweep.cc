@@ -168,6 +168,14 @@ namespace coaxfit
   int
   ParameterSweep::run()
   {
+    // A section is one value with commas in it, which the list of values
+    // would cut apart.
+    if (sweep.entry == "Geometry/Shaft section"
+        || sweep.entry == "Geometry/Hub section")
+      throw InputError("--sweep " + sweep.entry
+                       + ": a section cannot be swept (its points contain "
+                         "commas); give each variant its own parameter file "
+                         "and run them together (coaxfit A.prm B.prm ...)");
     // The file itself must be a valid case (otherwise every value fails
     // for the same reason: one message, exit 1).
     // A sweep over Fit/Case replaces the file's case (also Case = all).

@@ -1,3 +1,4 @@
+#include <coaxfit/fe/section_scene.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <fstream>
@@ -18,13 +19,22 @@ namespace coaxfit
       = results.interface.load_displacement(ContactInterface::Side::inner);
     const Vector<double> &load2
       = results.interface.load_displacement(ContactInterface::Side::outer);
-    out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n";
+    // Sections: the drawing's z as well (a half model's z is measured
+    // from its plane of symmetry).
+    const SectionScene *sections = results.parameters.sections.get();
+    out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status"
+        << (sections ? ",z_drawing_mm\n" : "\n");
     for (unsigned int i = 0; i < results.interface.n_points(); ++i)
-      out << results.interface.z()[i] << ',' << results.pressure.pressure[i]
-          << ',' << solver.u_shaft()[i] + load1[i] << ','
-          << solver.u_hub()[i] + load2[i] << ',' << gap[i]
-          << (solver.get_active_set().in_contact()[i] ? ",contact\n" :
-                                                        ",separated\n");
+      {
+        out << results.interface.z()[i] << ',' << results.pressure.pressure[i]
+            << ',' << solver.u_shaft()[i] + load1[i] << ','
+            << solver.u_hub()[i] + load2[i] << ',' << gap[i]
+            << (solver.get_active_set().in_contact()[i] ? ",contact" :
+                                                          ",separated");
+        if (sections)
+          out << ',' << results.interface.z()[i] + sections->drawing_offset();
+        out << '\n';
+      }
     close_result_file(out, directory + "/" + name);
     return name + ": pressure and gap at "
            + std::to_string(results.interface.n_points()) + " points";

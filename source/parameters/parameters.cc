@@ -536,8 +536,9 @@ namespace coaxfit
                       "Grading ratio per cell up to 8 times this size. "
                       "Both bodies get the same vertices on the joint. 0: "
                       "l_F / 100. Mesh/Axial cells and Radial cells apply "
-                      "to plain cylinders only. Allowed: 0, or 1e-6 l_F to "
-                      "l_F.",
+                      "to plain cylinders only; Mesh/Grading ratio at most 3 "
+                      "here. Allowed: 0, or l_F / 1000 to l_F / 4, and at "
+                      "most about 50000 cells per section.",
                       Patterns::Double(0.));
     prm.add_parameter("Degree",
                       degree,

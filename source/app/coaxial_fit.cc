@@ -42,7 +42,20 @@ namespace coaxfit
         body.discretization->setup_system();
       for (Body &body : scene.bodies)
         body.discretization->assemble_system();
+      scene.connect_joint();
       amg_solver = use_amg(parameters);
+      if (scene.has_transfer()
+          && (amg_solver
+              || scene.bodies[scene.point_body()]
+                     .discretization->n_interface_points()
+                   > max_condensed_points))
+        throw InputError(
+          "parameter Mesh/Joint nodes = own: the joint nodes do not match, "
+          "and the projection between them needs the condensed operator "
+          "(at most "
+          + std::to_string(max_condensed_points)
+          + " interface points, a direct linear solver); use "
+            "Mesh/Joint nodes = shared or a coarser mesh");
       if (amg_solver)
         ensure_mpi_initialized();
       for (Body &body : scene.bodies)
@@ -96,12 +109,27 @@ namespace coaxfit
       }
     const JointSides &joint = scene.joint();
     const Body       &inner = scene.inner(joint), &outer = scene.outer(joint);
-    interface = std::make_unique<ContactInterface>(
-      *inner.discretization,
-      *outer.discretization,
-      joint.interference,
-      inner.discretization->interface_radial_values(inner.load_field),
-      outer.discretization->interface_radial_values(outer.load_field));
+    // On the points of one side if they do not match (the other side's
+    // values arrive by the mortar transfer).
+    const Vector<double> u1_load
+      = scene.joint_values(joint.inner,
+                           inner.discretization->interface_radial_values(
+                             inner.load_field));
+    const Vector<double> u2_load
+      = scene.joint_values(joint.outer,
+                           outer.discretization->interface_radial_values(
+                             outer.load_field));
+    interface = scene.has_transfer() ?
+                  std::make_unique<ContactInterface>(
+                    *scene.bodies[scene.point_body()].discretization,
+                    joint.interference,
+                    u1_load,
+                    u2_load) :
+                  std::make_unique<ContactInterface>(*inner.discretization,
+                                                     *outer.discretization,
+                                                     joint.interference,
+                                                     u1_load,
+                                                     u2_load);
   }
 
 
@@ -166,6 +194,12 @@ namespace coaxfit
           start_from_coarse_solution(*staggered, *model);
         staggered->use_coarse_model(std::move(model));
       }
+    if (scene.has_transfer())
+      staggered->set_force_transfer([this](const unsigned int    side,
+                                           const Vector<double> &force) {
+        const JointSides &joint = scene.joint();
+        return scene.body_forces(side == 0 ? joint.inner : joint.outer, force);
+      });
     return staggered;
   }
 
@@ -184,6 +218,16 @@ namespace coaxfit
       if (!body.condensed)
         body.condensed = std::make_unique<CondensedBody>(*body.solver);
     });
+    // The mortar side seen from the interface points: M C M^T.
+    if (scene.has_transfer())
+      {
+        Body                    &body = scene.bodies[scene.mortar_body()];
+        const FullMatrix<double> M    = scene.joint_transfer().matrix();
+        FullMatrix<double>       MC(M.m(), M.n()), compliance(M.m(), M.m());
+        M.mmult(MC, body.condensed->get_compliance());
+        MC.mTmult(compliance, M);
+        body.condensed = std::make_unique<CondensedBody>(compliance);
+      }
   }
 
 
@@ -237,7 +281,8 @@ namespace coaxfit
            && (parameters.coupling.accelerator() == AcceleratorType::iqn_ils
                || parameters.coupling.accelerator() == AcceleratorType::ibqn)
            && parameters.solver.method != SolverMethod::monolithic
-           && parameters.mesh.global_refinements > 0 && !amg_solver;
+           && parameters.mesh.global_refinements > 0 && !amg_solver
+           && !scene.has_transfer();
   }
 
 
@@ -299,12 +344,18 @@ namespace coaxfit
   {
     const Vector<double>   zero(interference.size());
     const JointSides      &joint = scene.joint();
-    const ContactInterface contact(*scene.inner(joint).discretization,
-                                   *scene.outer(joint).discretization,
-                                   0.,
-                                   interference,
-                                   zero);
-    const auto             solver = make_solver(contact, unilateral);
+    const ContactInterface contact
+      = scene.has_transfer() ?
+          ContactInterface(*scene.bodies[scene.point_body()].discretization,
+                           0.,
+                           interference,
+                           zero) :
+          ContactInterface(*scene.inner(joint).discretization,
+                           *scene.outer(joint).discretization,
+                           0.,
+                           interference,
+                           zero);
+    const auto solver = make_solver(contact, unilateral);
     if (!solver->run(nullptr))
       throw SolverError("a solve of the operating analysis did not converge "
                         "within Coupling/Max steps = "
@@ -321,8 +372,9 @@ namespace coaxfit
     std::vector<Vector<double>> u_r(scene.bodies.size());
     for_each_concurrently(scene.bodies, [&](Body &body) {
       const unsigned int b = &body - scene.bodies.data();
-      u_r[b]               = body.discretization->interface_radial_values(
-        body.answer_to(loads[b]));
+      u_r[b]               = scene.joint_values(b,
+                                  body.discretization->interface_radial_values(
+                                    body.answer_to(loads[b])));
     });
     Vector<double> change(u_r[scene.joint().inner]);
     change -= u_r[scene.joint().outer];

@@ -58,6 +58,15 @@ namespace coaxfit
 
 
 
+  ContactInterface::ContactInterface(const BodyDiscretization &side,
+                                     const double              interference,
+                                     const Vector<double>     &u1_load,
+                                     const Vector<double>     &u2_load)
+    : ContactInterface(side, side, interference, u1_load, u2_load)
+  {}
+
+
+
   Vector<double>
   ContactInterface::gap(const Vector<double> &u1,
                         const Vector<double> &u2) const

@@ -1,6 +1,8 @@
+#include <coaxfit/coupling/interface_side.h>
 #include <coaxfit/coupling/scene.h>
 #include <coaxfit/fe/section_scene.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <memory>
@@ -164,9 +166,21 @@ namespace coaxfit
       {
         // Both meshes at once: their joint vertices must coincide.
         auto meshes = std::make_shared<std::array<Triangulation<2>, 2>>();
-        parameters.sections->make_meshes((*meshes)[0],
-                                         (*meshes)[1],
-                                         section_mesh_settings(parameters));
+        const SectionMeshSettings settings = section_mesh_settings(parameters);
+        if (parameters.mesh.shared_joint_nodes)
+          parameters.sections->make_meshes((*meshes)[0],
+                                           (*meshes)[1],
+                                           settings);
+        else
+          {
+            SectionMeshSettings hub = settings;
+            if (parameters.mesh.hub_cell_size > 0.)
+              hub.cell_size = parameters.mesh.hub_cell_size;
+            parameters.sections->make_own_meshes((*meshes)[0],
+                                                 (*meshes)[1],
+                                                 settings,
+                                                 hub);
+          }
         const unsigned int refinements = parameters.mesh.global_refinements;
         for (unsigned int b = 0; b < 2; ++b)
           bodies[b].discretization->set_mesh_builder(
@@ -197,5 +211,63 @@ namespace coaxfit
         return joint.interference
                / bodies[body].discretization->geometry().contact_radius();
     return 0.;
+  }
+
+
+
+  void
+  Scene::connect_joint()
+  {
+    transfer.reset();
+    const BodyDiscretization &a = *bodies[0].discretization,
+                             &b = *bodies[1].discretization;
+    if (a.n_interface_points() == b.n_interface_points())
+      {
+        const double scale
+          = std::max({std::abs(a.interface_z().front()),
+                      std::abs(a.interface_z().back()),
+                      a.interface_z().back() - a.interface_z().front()});
+        bool same = true;
+        for (unsigned int i = 0; i < a.n_interface_points(); ++i)
+          same = same
+                 && std::abs(a.interface_z()[i] - b.interface_z()[i])
+                      <= 1e-9 * scale;
+        if (same)
+          return;
+      }
+    const InterfaceSide sides[2]
+      = {InterfaceSide(a.get_dof_handler(), BoundaryId::joint),
+         InterfaceSide(b.get_dof_handler(), BoundaryId::joint)};
+    mortar = sides[0].n_nodes() >= sides[1].n_nodes() ? 0 : 1;
+    auto m = std::make_shared<MortarTransfer>(sides[mortar], sides[1 - mortar]);
+    if (!m->uncovered_nodes().empty())
+      throw std::logic_error("the joint of " + bodies[1 - mortar].name()
+                             + " has points the " + bodies[mortar].name()
+                             + "'s joint does not " + "cover");
+    transfer = m;
+  }
+
+
+
+  Vector<double>
+  Scene::joint_values(const unsigned int body, const Vector<double> &own) const
+  {
+    if (!transfer || body != mortar)
+      return own;
+    Vector<double> values(transfer->n_non_mortar_nodes());
+    transfer->apply(own, values);
+    return values;
+  }
+
+
+
+  Vector<double>
+  Scene::body_forces(const unsigned int body, const Vector<double> &force) const
+  {
+    if (!transfer || body != mortar)
+      return force;
+    Vector<double> forces(transfer->n_mortar_nodes());
+    transfer->apply_transpose(force, forces);
+    return forces;
   }
 } // namespace coaxfit

@@ -194,15 +194,17 @@ namespace coaxfit
   std::pair<Vector<double>, Vector<double>>
   StaggeredCoupling::solve_fields()
   {
-    // One full solve per body with the final contact force.
-    const std::vector<bool> none(state.force.size(), false);
-    const Vector<double>    zero(state.force.size());
-    Vector<double>          shaft_field, hub_field;
-    concurrently(
-      [&]() {
-        shaft_field = shaft_solver.solve_field(none, zero, state.force);
-      },
-      [&]() { hub_field = hub_solver.solve_field(none, zero, state.force); });
+    // One full solve per body with the final contact force (on its own
+    // joint points: the transposed transfer for a mortar side).
+    const auto field = [&](BodySolver &solver, const unsigned int side) {
+      const Vector<double> force
+        = force_to_body ? force_to_body(side, state.force) : state.force;
+      const std::vector<bool> none(force.size(), false);
+      return solver.solve_field(none, Vector<double>(force.size()), force);
+    };
+    Vector<double> shaft_field, hub_field;
+    concurrently([&]() { shaft_field = field(shaft_solver, 0); },
+                 [&]() { hub_field = field(hub_solver, 1); });
     return {shaft_field, hub_field};
   }
 

@@ -289,20 +289,8 @@ namespace coaxfit
     // The middle of a half model's joint is no end.
     joint.refine_ends = !half;
 
-    const auto boundary_of = [&](const SectionOutline &outline) {
-      SectionBoundary boundary;
-      boundary.segments.push_back(joint);
-      const double tol = 1e-9 * outline.extent();
-      for (const OutlineEdge &edge : outline.edges())
-        if (half && !edge.is_arc() && std::abs(edge.start[1]) <= tol
-            && std::abs(edge.end[1]) <= tol)
-          {
-            TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
-            plane.refine_ends = false;
-            boundary.segments.push_back(plane);
-          }
-      return boundary;
-    };
+    const auto boundary_of
+      = [&](const SectionOutline &outline) { return boundary(outline, joint); };
     SectionMeshSettings local = settings;
     local.refinement_points.clear();
     if (half)
@@ -323,5 +311,51 @@ namespace coaxfit
     };
     if (!mesh_both(settings.full_quad))
       mesh_both(true);
+  }
+
+
+
+  SectionBoundary
+  SectionScene::boundary(const SectionOutline &outline,
+                         const TaggedSegment  &joint) const
+  {
+    SectionBoundary result;
+    result.segments.push_back(joint);
+    const double tol = 1e-9 * outline.extent();
+    for (const OutlineEdge &edge : outline.edges())
+      if (half && !edge.is_arc() && std::abs(edge.start[1]) <= tol
+          && std::abs(edge.end[1]) <= tol)
+        {
+          TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
+          plane.refine_ends = false;
+          result.segments.push_back(plane);
+        }
+    return result;
+  }
+
+
+
+  void
+  SectionScene::make_own_meshes(Triangulation<2>          &shaft,
+                                Triangulation<2>          &hub,
+                                const SectionMeshSettings &shaft_settings,
+                                const SectionMeshSettings &hub_settings) const
+  {
+    const Point<2> start(radius, joint_start()), end(radius, joint_end());
+    TaggedSegment  joint{start, end, BoundaryId::joint};
+    joint.refine_ends = !half; // the middle of a half model is no end
+    for (const bool is_shaft : {true, false})
+      {
+        SectionMeshSettings local = is_shaft ? shaft_settings : hub_settings;
+        local.refinement_points.clear();
+        if (half)
+          local.refinement_points.push_back(end);
+        Triangulation<2> &mesh = is_shaft ? shaft : hub;
+        mesh.clear();
+        make_section_mesh(mesh,
+                          modelled(is_shaft),
+                          boundary(modelled(is_shaft), joint),
+                          local);
+      }
   }
 } // namespace coaxfit

@@ -26,13 +26,25 @@ namespace coaxfit
     // at the joint radius, see AssembledDisplacement).
     const Scene      &scene = results.scene;
     const JointSides &joint = scene.joint();
+    // Each body's u_r and u_z at the interface points (by the mortar
+    // transfer for a side whose joint nodes are not these points).
+    std::vector<std::array<Vector<double>, 2>> joint_field(scene.bodies.size());
+    for (unsigned int body = 0; body < scene.bodies.size(); ++body)
+      {
+        const BodyDiscretization &d     = *scene.bodies[body].discretization;
+        const Vector<double>     &field = results.fields[body];
+        Vector<double>            u_z(d.n_interface_points());
+        for (unsigned int i = 0; i < u_z.size(); ++i)
+          u_z[i] = field[d.get_interface_axial_dofs()[i]];
+        joint_field[body]
+          = {{scene.joint_values(body, d.interface_radial_values(field)),
+              scene.joint_values(body, u_z)}};
+      }
     const auto surface = [&](const unsigned int body, const unsigned int i) {
-      const BodyDiscretization &d     = *scene.bodies[body].discretization;
-      const Vector<double>     &field = results.fields[body];
       return std::array<double, 2>{
-        {field[d.get_interface_dofs()[i]]
+        {joint_field[body][0][i]
            + (body == joint.inner ? interface.interference() : 0.),
-         field[d.get_interface_axial_dofs()[i]]}};
+         joint_field[body][1][i]}};
     };
     const auto scalar =
       [&](const std::string &array_name, const std::string &unit, auto value) {
@@ -78,8 +90,10 @@ namespace coaxfit
     out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
            "NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (unsigned int i = 0; i < n; ++i)
-      out << scene.outer(joint).discretization->interface_points()[i][0] << ' '
-          << interface.z()[i] << " 0\n";
+      out << scene
+               .bodies[scene.has_transfer() ? scene.point_body() : joint.outer]
+               .discretization->interface_points()[i][0]
+          << ' ' << interface.z()[i] << " 0\n";
     out << "</DataArray>\n</Points>\n<Lines>\n"
         << "<DataArray type=\"Int32\" Name=\"connectivity\" "
            "format=\"ascii\">\n";

@@ -540,6 +540,29 @@ namespace coaxfit
                       "here. Allowed: 0, or l_F / 1000 to l_F / 4, and at "
                       "most about 50000 cells per section.",
                       Patterns::Double(0.));
+    prm.add_parameter("Hub cell size",
+                      hub_cell_size,
+                      "Sections only: Mesh/Cell size for the hub (mm); 0: "
+                      "Mesh/Cell size. With Mesh/Joint nodes = shared the "
+                      "joint's vertices follow Mesh/Cell size in both "
+                      "bodies. Allowed: as Mesh/Cell size.",
+                      Patterns::Double(0.));
+    prm.declare_entry("Joint nodes",
+                      "shared",
+                      Patterns::Selection("shared|own"),
+                      "Sections only. shared: both bodies get the same "
+                      "vertices on the joint, so their joint nodes coincide "
+                      "and the coupling takes the exact index map. own: each "
+                      "body is meshed on its own (the joint nodes need not "
+                      "match); the finer side's displacements reach the "
+                      "coarser side's points by the r-weighted L2 "
+                      "projection M and the forces go back by M^T (total "
+                      "force conserved), with the condensed operator of the "
+                      "staggered method (Solver/Method = staggered, "
+                      "Solver/Linear solver direct) and no coarse model.");
+    prm.add_action("Joint nodes", [this](const std::string &value) {
+      shared_joint_nodes = value == "shared";
+    });
     prm.add_parameter("Degree",
                       degree,
                       "Polynomial degree p of the FE_Q elements for both "

@@ -173,6 +173,26 @@ namespace coaxfit
               p.mesh.cell_size,
               "0 (l_F / 100) or l_F / 1000 to l_F / 4 (l_F = " + number(l_F)
                 + " mm, the joint length of the sections)");
+      require(p.mesh.hub_cell_size == 0.
+                || (p.mesh.hub_cell_size >= 1e-3 * l_F
+                    && p.mesh.hub_cell_size <= 0.25 * l_F),
+              "Mesh/Hub cell size",
+              p.mesh.hub_cell_size,
+              "0 (Mesh/Cell size) or l_F / 1000 to l_F / 4 (l_F = "
+                + number(l_F) + " mm)");
+      if (!p.mesh.shared_joint_nodes)
+        {
+          if (p.solver.method != SolverMethod::staggered)
+            throw InputError("parameter Solver/Method = monolithic is not "
+                             "allowed with Mesh/Joint nodes = own: the "
+                             "monolithic reference needs shared joint nodes");
+          if (p.solver.linear_solver == LinearSolverType::amg
+              || p.coupling.interface_operator == InterfaceOperatorType::full)
+            throw InputError("parameters Solver/Linear solver = amg and "
+                             "Coupling/Interface operator = full are not "
+                             "allowed with Mesh/Joint nodes = own (the "
+                             "projection works on the condensed operator)");
+        }
       require(p.mesh.grading_ratio <= 3.,
               "Mesh/Grading ratio",
               p.mesh.grading_ratio,

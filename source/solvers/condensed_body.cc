@@ -11,6 +11,13 @@ namespace coaxfit
 
 
 
+  CondensedBody::CondensedBody(const FullMatrix<double> &compliance)
+    : compliance(compliance)
+    , factorizations(std::numeric_limits<unsigned int>::max())
+  {}
+
+
+
   void
   CondensedBody::solve(const std::vector<bool> &prescribed,
                        const Vector<double>    &displacement,

@@ -47,6 +47,16 @@ namespace coaxfit
                      const Vector<double>     &u1_load,
                      const Vector<double>     &u2_load);
 
+    /**
+     * The interface on the joint points of @p side alone (the sides do not
+     * match: the other side's displacements @p u1_load or @p u2_load have
+     * been brought to these points by the mortar transfer).
+     */
+    ContactInterface(const BodyDiscretization &side,
+                     double                    interference,
+                     const Vector<double>     &u1_load,
+                     const Vector<double>     &u2_load);
+
     unsigned int
     n_points() const
     {

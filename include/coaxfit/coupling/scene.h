@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <coaxfit/coupling/mortar_transfer.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/parameters/parameters.h>
@@ -135,8 +136,66 @@ namespace coaxfit
     double
     oversize(unsigned int body) const;
 
+    /**
+     * After the bodies are set up: if the joint nodes of the two bodies do
+     * not coincide (Mesh/Joint nodes = own), build the mortar transfer
+     * from the body with more joint nodes (the mortar side) to the other
+     * (whose points carry the coupling's interface data); otherwise
+     * none. Throws std::logic_error if a point of the coarser side is not
+     * covered by the finer one.
+     */
+    void
+    connect_joint();
+
+    /** Whether the joint's sides are connected by a mortar transfer. */
+    bool
+    has_transfer() const
+    {
+      return transfer != nullptr;
+    }
+
+    /** The body whose joint points carry the interface data. */
+    unsigned int
+    point_body() const
+    {
+      return transfer ? 1 - mortar : 0;
+    }
+
+    /**
+     * The values @p own at the joint points of body @p body (its u_r, say)
+     * at the interface points: M own for the mortar side, else @p own.
+     */
+    Vector<double>
+    joint_values(unsigned int body, const Vector<double> &own) const;
+
+    /**
+     * Nodal joint forces @p force at the interface points as forces on
+     * the joint points of body @p body: M^T force for the mortar side
+     * (total force and virtual work conserved), else @p force.
+     */
+    Vector<double>
+    body_forces(unsigned int body, const Vector<double> &force) const;
+
+    /** The transfer (has_transfer()). */
+    const MortarTransfer &
+    joint_transfer() const
+    {
+      return *transfer;
+    }
+
+    /** The mortar side of the transfer (has_transfer()). */
+    unsigned int
+    mortar_body() const
+    {
+      return mortar;
+    }
+
     std::vector<Body>       bodies; ///< inside out
     std::vector<JointSides> joints; ///< between neighbours, inside out
+
+  private:
+    std::shared_ptr<const MortarTransfer> transfer;
+    unsigned int                          mortar = 0;
   };
 
 

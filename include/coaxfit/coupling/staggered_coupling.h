@@ -10,6 +10,7 @@
 #include <coaxfit/solvers/body_solver.h>
 #include <coaxfit/solvers/interface_operator.h>
 
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <vector>
@@ -87,10 +88,26 @@ namespace coaxfit
     std::pair<Vector<double>, Vector<double>>
     solve_fields() override;
 
+    /**
+     * The nodal joint forces of the interface points as forces on the joint
+     * points of the shaft (side 0) or the hub (side 1), for the final
+     * fields when the sides do not match (Scene::body_forces).
+     */
+    void
+    set_force_transfer(
+      const std::function<Vector<double>(unsigned int, const Vector<double> &)>
+        &transfer)
+    {
+      force_to_body = transfer;
+    }
+
     SolverStatistics
     statistics() const override;
 
   private:
+    std::function<Vector<double>(unsigned int, const Vector<double> &)>
+      force_to_body;
+
     void
     neumann_step();
 

@@ -168,7 +168,26 @@ namespace coaxfit
                 Triangulation<2>          &hub,
                 const SectionMeshSettings &settings) const;
 
+    /**
+     * Mesh both modelled sections each on its own: the joint tagged but
+     * its vertices chosen by gmsh from each body's @p shaft_settings or
+     * @p hub_settings (cell size at the joint's ends), so that the joint
+     * nodes need not coincide.
+     */
+    void
+    make_own_meshes(Triangulation<2>          &shaft,
+                    Triangulation<2>          &hub,
+                    const SectionMeshSettings &shaft_settings,
+                    const SectionMeshSettings &hub_settings) const;
+
   private:
+    /**
+     * The boundary of the mesh of @p outline: the joint @p joint and, for a
+     * half model, the plane of symmetry.
+     */
+    SectionBoundary
+    boundary(const SectionOutline &outline, const TaggedSegment &joint) const;
+
     std::unique_ptr<SectionOutline> shaft_drawn, hub_drawn;
     std::unique_ptr<SectionOutline> shaft_half, hub_half;
     double                          radius         = 0.;

@@ -191,6 +191,15 @@ namespace coaxfit
     VolumetricIntegration volumetric_integration = VolumetricIntegration::full;
     /** mm at the ends of a section's joint; 0: l_F / 100 (sections only). */
     double cell_size = 0.;
+    /** mm, the hub's cell size; 0: cell_size (sections only). */
+    double hub_cell_size = 0.;
+    /**
+     * Sections only: whether both bodies get the same vertices on the
+     * joint (`shared`), or each is meshed on its own (`own`: the joint
+     * nodes need not match, and the displacements and forces cross the
+     * joint by a mortar projection).
+     */
+    bool shared_joint_nodes = true;
 
     /** The grading must leave cells of representable size. */
     void

@@ -26,6 +26,13 @@ namespace coaxfit
     /** Form the compliance of the body that @p solver solves. */
     explicit CondensedBody(BodySolver &solver);
 
+    /**
+     * The operator of a given compliance @p compliance (symmetric positive
+     * definite): the body's own seen from other points, M C M^T for a
+     * mortar side.
+     */
+    explicit CondensedBody(const FullMatrix<double> &compliance);
+
     void
     solve(const std::vector<bool> &prescribed,
           const Vector<double>    &displacement,

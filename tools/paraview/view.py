@@ -9,8 +9,10 @@ OUTPUT_DIR is a run's result directory (the one holding solution.pvd; for a
 run with Fit/Case = all, its mean/ case is taken unless a case directory is
 given). Every block of solution.pvd is followed: an unstructured grid is a
 body (today shaft and hub), a polydata block is a contact surface (today
-contact_surface). A half model (every z >= 0, what coaxfit computes) is
-mirrored about the mid-plane z = 0; a whole model is drawn as it is.
+contact_surface). A half model (every z >= 0, what coaxfit computes for
+plain cylinders and symmetric sections; summary.json's
+geometry.sections.model says which for sections) is mirrored about the
+mid-plane z = 0; a whole model is drawn as it is.
 
 The views, each titled with the case name (from summary.json, else the
 directory name) and with a length scale:
@@ -504,7 +506,11 @@ class Viewer:
                             % (self.field, ", ".join(allowed)))
         every_z = numpy.concatenate([p.points[:, 1] for p in self.bodies + self.contacts])
         extent = float(numpy.abs(every_z).max()) or 1.0
-        self.half = bool(every_z.min() >= -1e-9 * extent)
+        # A half model has z >= 0 only, but so may a whole one drawn from
+        # z = 0 (a pulley flush with the shaft end): summary.json says.
+        model = self.run.get("geometry", {}).get("sections", {}).get("model")
+        self.half = (model == "half") if model else \
+            bool(every_z.min() >= -1e-9 * extent)
         self.r_outer = float(numpy.concatenate([b.points[:, 0] for b in self.bodies]).max())
         self.z_low = -extent if self.half else float(every_z.min())
         self.z_high = float(every_z.max())

@@ -91,15 +91,15 @@ namespace coaxfit
                    {"cells", cells},
                    {"dofs", dofs},
                    {"interface_points", results.interface.n_points()}};
-      // How the joint's sides are coupled: the same nodes, or the mortar
-      // projection from the finer side onto the other's points.
+      // How the joint's sides of sections are coupled: the same nodes, or
+      // the mortar projection from the finer side onto the other's points.
       const Scene &scene = results.scene;
-      if (scene.has_transfer())
+      if (p.sections) // plain cylinders always share their nodes
         j["mesh"]["joint_coupling"]
-          = "mortar: " + scene.bodies[scene.mortar_body()].key() + " onto "
-            + scene.bodies[scene.point_body()].key() + " points";
-      else
-        j["mesh"]["joint_coupling"] = "matching nodes";
+          = scene.has_transfer() ?
+              "mortar: " + scene.bodies[scene.mortar_body()].key() + " onto "
+                + scene.bodies[scene.point_body()].key() + " points" :
+              std::string("matching nodes");
       return j;
     }
 

@@ -83,9 +83,7 @@ namespace coaxfit
       return {};
     // Both lists increase (from z = 0 for a half model).
     const double tolerance
-      = 1e-9
-        * std::max(
-          {std::abs(zf.front()), std::abs(zf.back()), zc.back() - zc.front()});
+      = 1e-9 * std::max(z_range_scale(zf), z_range_scale(zc));
     std::vector<unsigned int> index;
     unsigned int              i = 0;
     for (const double z : zc)

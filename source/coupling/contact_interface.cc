@@ -7,6 +7,32 @@
 
 namespace coaxfit
 {
+  double
+  z_range_scale(const std::vector<double> &z)
+  {
+    return z.empty() ?
+             1. :
+             std::max(
+               {std::abs(z.front()), std::abs(z.back()), z.back() - z.front()});
+  }
+
+
+
+  bool
+  matching_points(const BodyDiscretization &a, const BodyDiscretization &b)
+  {
+    const std::vector<double> &za = a.interface_z(), &zb = b.interface_z();
+    if (za.size() != zb.size())
+      return false;
+    const double scale = z_range_scale(za);
+    for (unsigned int i = 0; i < za.size(); ++i)
+      if (std::abs(zb[i] - za[i]) > 1e-9 * scale)
+        return false;
+    return true;
+  }
+
+
+
   ContactInterface::ContactInterface(const BodyDiscretization &shaft,
                                      const BodyDiscretization &hub,
                                      const double              interference)
@@ -39,21 +65,9 @@ namespace coaxfit
         d_load[i] = d + u1_load[i] - u2_load[i];
         scale     = std::max(scale, std::abs(d_load[i]));
       }
-    const unsigned int n = z_coordinates.size();
-    // The size of the joint's z range (a whole model's z may end at 0).
-    const double scale
-      = z_coordinates.empty() ?
-          1. :
-          std::max({std::abs(z_coordinates.front()),
-                    std::abs(z_coordinates.back()),
-                    z_coordinates.back() - z_coordinates.front()});
-    if (n < 2 || hub.n_interface_points() != n)
+    if (z_coordinates.size() < 2 || !matching_points(shaft, hub))
       throw std::logic_error("the contact surfaces of shaft and hub do not "
                              "have matching points");
-    for (unsigned int i = 0; i < n; ++i)
-      if (std::abs(hub.interface_z()[i] - z_coordinates[i]) > 1e-9 * scale)
-        throw std::logic_error("the contact surfaces of shaft and hub do not "
-                               "have matching points");
   }
 
 

@@ -1,3 +1,4 @@
+#include <coaxfit/coupling/contact_interface.h>
 #include <coaxfit/coupling/interface_side.h>
 #include <coaxfit/coupling/scene.h>
 #include <coaxfit/fe/section_scene.h>
@@ -221,20 +222,8 @@ namespace coaxfit
     transfer.reset();
     const BodyDiscretization &a = *bodies[0].discretization,
                              &b = *bodies[1].discretization;
-    if (a.n_interface_points() == b.n_interface_points())
-      {
-        const double scale
-          = std::max({std::abs(a.interface_z().front()),
-                      std::abs(a.interface_z().back()),
-                      a.interface_z().back() - a.interface_z().front()});
-        bool same = true;
-        for (unsigned int i = 0; i < a.n_interface_points(); ++i)
-          same = same
-                 && std::abs(a.interface_z()[i] - b.interface_z()[i])
-                      <= 1e-9 * scale;
-        if (same)
-          return;
-      }
+    if (matching_points(a, b))
+      return;
     const InterfaceSide sides[2]
       = {InterfaceSide(a.get_dof_handler(), BoundaryId::joint),
          InterfaceSide(b.get_dof_handler(), BoundaryId::joint)};

@@ -132,18 +132,15 @@ namespace coaxfit
         double at_end[2]  = {0., 0.};
         for (const StressState &s : *states)
           {
-            const double distance
-              = std::min(std::abs(s.z - z_corner), std::abs(s.z - z_other));
+            const double to_end[2]
+              = {std::abs(s.z - z_corner), std::abs(s.z - z_other)};
+            const double distance = std::min(to_end[0], to_end[1]);
             for (const unsigned int e : {0u, 1u})
-              {
-                const double to_end
-                  = std::abs(s.z - (e == 0 ? z_corner : z_other));
-                if (to_end < nearest[e])
-                  {
-                    nearest[e] = to_end;
-                    at_end[e]  = s.von_mises();
-                  }
-              }
+              if (to_end[e] < nearest[e])
+                {
+                  nearest[e] = to_end[e];
+                  at_end[e]  = s.von_mises();
+                }
             if (distance >= edge_distance
                 && !(s.von_mises() <= m.von_mises)) // NaN: the first
               {

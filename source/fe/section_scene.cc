@@ -289,8 +289,6 @@ namespace coaxfit
     // The middle of a half model's joint is no end.
     joint.refine_ends = !half;
 
-    const auto boundary_of
-      = [&](const SectionOutline &outline) { return boundary(outline, joint); };
     SectionMeshSettings local = settings;
     local.refinement_points.clear();
     if (half)
@@ -301,11 +299,11 @@ namespace coaxfit
       local.full_quad = full_quad;
       const bool a    = make_section_mesh(shaft,
                                        modelled(true),
-                                       boundary_of(modelled(true)),
+                                       boundary(modelled(true), joint),
                                        local);
       const bool b    = make_section_mesh(hub,
                                        modelled(false),
-                                       boundary_of(modelled(false)),
+                                       boundary(modelled(false), joint),
                                        local);
       return a == b;
     };

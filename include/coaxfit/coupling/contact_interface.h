@@ -10,6 +10,21 @@
 namespace coaxfit
 {
   /**
+   * The size of the z range @p z for relative tolerances (mm):
+   * max(|z_0|, |z_n|, z_n - z_0), 1 if empty (a whole model's z may end at
+   * 0, a half model's starts there).
+   */
+  double
+  z_range_scale(const std::vector<double> &z);
+
+  /**
+   * Whether the interface points of @p a and @p b coincide: as many, each
+   * z within 1e-9 of z_range_scale() of @p a's.
+   */
+  bool
+  matching_points(const BodyDiscretization &a, const BodyDiscretization &b);
+
+  /**
    * The contact surface S as both bodies see it, and its algebra: the
    * ordered points shared by the shaft D1 and the hub D2 (their meshes match
    * on S, so point i of one body is point i of the other), the interference

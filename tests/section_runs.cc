@@ -27,6 +27,7 @@
 // 5. Bad scenes: exit code 1, one line naming the entry, nothing written.
 
 #include "run_executable.h"
+#include "run_summary.h"
 
 #include <cmath>
 #include <filesystem>
@@ -41,6 +42,10 @@
 
 namespace
 {
+  using coaxfit_test::close;
+  using coaxfit_test::Result;
+  using coaxfit_test::run;
+
   const std::string gear
     = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/gear_on_shaft.prm";
 
@@ -61,8 +66,7 @@ namespace
                                 "  set Global refinements = 1\n"
                                 "end\n";
 
-  const std::string quiet
-    = " --set \"Output/Write vtu=false\" --set \"Output/Write plots=false\" ";
+  using coaxfit_test::quiet;
 
   std::string
   write_prm(const std::string &name, const std::string &text)
@@ -83,62 +87,6 @@ namespace
          << "  set Shaft length = 200\n  set Hub length = 50\nend\n"
          << materials;
     return write_prm(name, text.str());
-  }
-
-  struct Result
-  {
-    int                                    exit_code;
-    double                                 mean = 0., at_mid_plane = 0.;
-    std::string                            coupling; ///< of the joint
-    std::vector<std::pair<double, double>> profile;  // z, p
-    /** p at @p z, linear between the points of contact_pressure.csv. */
-    double
-    at(const double z) const
-    {
-      for (unsigned int i = 1; i < profile.size(); ++i)
-        if (profile[i].first >= z)
-          {
-            const auto &[z0, p0] = profile[i - 1];
-            const auto &[z1, p1] = profile[i];
-            return p0 + (p1 - p0) * (z - z0) / (z1 - z0);
-          }
-      return NAN;
-    }
-  };
-
-  Result
-  run(const std::string &dir, const std::string &arguments)
-  {
-    std::filesystem::remove_all(dir);
-    Result result;
-    result.exit_code
-      = coaxfit_test::run_coaxfit(dir, quiet + arguments).exit_code;
-    std::ifstream in(dir + "/summary.json");
-    if (!in)
-      return result;
-    const auto summary  = nlohmann::json::parse(in);
-    result.mean         = summary["pressure"]["mean"];
-    result.at_mid_plane = summary["pressure"]["at_mid_plane"];
-    if (summary["mesh"].contains("joint_coupling"))
-      result.coupling = summary["mesh"]["joint_coupling"];
-    std::ifstream csv(dir + "/contact_pressure.csv");
-    std::string   line;
-    std::getline(csv, line);
-    while (std::getline(csv, line))
-      {
-        std::istringstream row(line);
-        std::string        z, p;
-        std::getline(row, z, ',');
-        std::getline(row, p, ',');
-        result.profile.emplace_back(std::stod(z), std::stod(p));
-      }
-    return result;
-  }
-
-  bool
-  close(const double a, const double b, const double tolerance)
-  {
-    return std::abs(a - b) <= tolerance * std::abs(b);
   }
 
   std::string
@@ -360,28 +308,8 @@ main()
     }
 
   // 4. Refinement study.
-  std::cout << "refinement study of gear_on_shaft.prm (mean, p(5), p(10), "
-               "p(15) in MPa):\n";
-  std::vector<std::vector<double>> levels;
-  for (unsigned int r = 0; r < 3; ++r)
-    {
-      const Result level = run("gear_" + std::to_string(r),
-                               "--set \"Mesh/Global refinements="
-                                 + std::to_string(r) + "\" " + gear);
-      levels.push_back(
-        {level.mean, level.at(5.), level.at(10.), level.at(15.)});
-      std::cout << "  refinements " << r << ": exit " << level.exit_code;
-      for (const double v : levels.back())
-        std::cout << "  " << std::setprecision(4) << v;
-      std::cout << '\n';
-    }
-  std::cout << "  mean: change " << std::scientific << std::setprecision(1)
-            << std::abs(levels[1][0] - levels[0][0]) / levels[2][0] << " then "
-            << std::abs(levels[2][0] - levels[1][0]) / levels[2][0]
-            << " of the value, order " << std::fixed
-            << std::log2(std::abs(levels[1][0] - levels[0][0])
-                         / std::abs(levels[2][0] - levels[1][0]))
-            << '\n';
+  coaxfit_test::refinement_study("gear", gear, {5., 10., 15.}, std::cout);
+  std::cout << std::setprecision(3);
 
   // 5. Bad scenes.
   std::cout << "bad scenes (exit code, lines, output written, message):\n";
@@ -393,7 +321,7 @@ main()
      "--set \"Geometry/Shaft section=-100, 0; 100, 0; 100, 70; 25, 70; "
      "25, 50; -100, 50; -100, 0\" "
        + gear},
-    {"a taper",
+    {"a taper with a diametral interference (not a push-on distance)",
      "--set \"Geometry/Shaft section=-50, 0; 50, 0; 50, 52; -50, 48; -50, 0\" "
      "--set \"Geometry/Hub section=-20, 49.2; 20, 50.8; 20, 100; -20, 100; "
      "-20, 49.2\" "

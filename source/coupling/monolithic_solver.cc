@@ -32,8 +32,10 @@ namespace coaxfit
     // of the two stiffness matrices side by side with each row and each
     // column either kept or (tied point) moved to the shaft's DoF: the
     // union of the patterns of all active sets.
-    const SparseMatrix<double>     &K1 = shaft.get_stiffness_matrix();
-    const SparseMatrix<double>     &K2 = hub.get_stiffness_matrix();
+    const SparseMatrix<double> &K1
+      = shaft.stiffness_in_interface_frame(shaft_rotated);
+    const SparseMatrix<double> &K2
+      = hub.stiffness_in_interface_frame(hub_rotated);
     const unsigned int              n1 = K1.m(), n = K1.m() + K2.m();
     const AffineConstraints<double> all_tied = tie_constraints(
       std::vector<bool>(shaft.get_interface_dofs().size(), true));
@@ -81,10 +83,12 @@ namespace coaxfit
   void
   MonolithicSolver::solve_tied()
   {
-    const SparseMatrix<double> &K1 = shaft.get_stiffness_matrix();
-    const SparseMatrix<double> &K2 = hub.get_stiffness_matrix();
-    const unsigned int          n1 = K1.m(), n = K1.m() + K2.m();
-    const auto                 &dofs1 = shaft.get_interface_dofs();
+    const SparseMatrix<double> &K1
+      = shaft.stiffness_in_interface_frame(shaft_rotated);
+    const SparseMatrix<double> &K2
+      = hub.stiffness_in_interface_frame(hub_rotated);
+    const unsigned int n1 = K1.m(), n = K1.m() + K2.m();
+    const auto        &dofs1 = shaft.get_interface_dofs();
 
     if (pattern.empty())
       setup_pattern();
@@ -112,6 +116,8 @@ namespace coaxfit
       x1[i] = rhs[i];
     for (unsigned int i = 0; i < K2.m(); ++i)
       x2[i] = rhs[n1 + i];
+    shaft.from_interface_frame(x1);
+    hub.from_interface_frame(x2);
     shaft_field = x1;
     hub_field   = x2;
 

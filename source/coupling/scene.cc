@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -158,11 +159,30 @@ namespace coaxfit
 
 
 
+  namespace
+  {
+    /**
+     * The interference along the joint's normal: the radial one, times
+     * cos of the half angle on a cone (C = 2 tan).
+     */
+    double
+    normal_interference(const Parameters &parameters)
+    {
+      if (!parameters.sections || !parameters.sections->conical())
+        return parameters.geometry.d;
+      const double tan_half = 0.5 * parameters.sections->taper();
+      return parameters.geometry.d / std::sqrt(1. + tan_half * tan_half);
+    }
+  } // namespace
+
+
+
   Scene::Scene(const Parameters &parameters)
   {
     for (const std::string &name : body_names(parameters))
       bodies.emplace_back(make_body(parameters, name));
-    joints.push_back({0, 1, parameters.geometry.d});
+    joints.push_back(
+      {0, 1, normal_interference(parameters), parameters.geometry.d});
     if (parameters.sections)
       {
         // Both meshes at once: their joint vertices must coincide.
@@ -199,7 +219,8 @@ namespace coaxfit
   {
     for (Body &body : bodies)
       body.discretization->set_load(body_load(parameters, body.name()));
-    joints[0].interference = parameters.geometry.d;
+    joints[0].radial_interference = parameters.geometry.d;
+    joints[0].interference        = normal_interference(parameters);
   }
 
 
@@ -209,7 +230,7 @@ namespace coaxfit
   {
     for (const JointSides &joint : joints)
       if (joint.inner == body)
-        return joint.interference
+        return joint.radial_interference
                / bodies[body].discretization->geometry().contact_radius();
     return 0.;
   }

@@ -118,6 +118,11 @@ namespace coaxfit
       line << " (" << f.iso_fit << " at D_F = " << 2. * parameters.geometry.R1
            << " mm: U_min " << f.U_min << ", U_max " << f.U_max << " mm; case "
            << to_string(f.fit_case) << ")";
+    if (parameters.sections && parameters.sections->conical())
+      line << " (taper C = " << parameters.sections->taper() << ", half angle "
+           << std::atan(0.5 * parameters.sections->taper()) * 180. / M_PI
+           << " degrees, pushed on by a = " << parameters.fit.push_on_distance
+           << " mm: U = a C)";
     line << ", smoothing loss " << f.smoothing_loss
          << " mm, effective U_w = " << 2. * parameters.geometry.d << " mm";
     return line.str();
@@ -158,6 +163,25 @@ namespace coaxfit
     for (const FitDesign::SurfaceMaximum &m : design.surface_maxima)
       table << "; at the end, " << corner_text(m);
     table << ")\n";
+    if (design.cone_sin > 0.)
+      {
+        const double tan_beta = design.cone_sin / design.cone_cos;
+        const double mu       = parameters.design.friction_coefficient;
+        table << std::setprecision(5)
+              << "    (taper: the hub is held where it is pushed on by "
+              << design.push_on_force
+              << " N without friction (FE; thick-walled estimate "
+              << design.push_on_force_din
+              << " N), the press-in force adds friction along the cone; "
+              << (mu > tan_beta ? "self-locking" : "NOT self-locking")
+              << ": mu = " << mu << (mu > tan_beta ? " > " : " <= ")
+              << "tan(half angle) = " << tan_beta
+              << (mu > tan_beta ?
+                    ", the axial force capacity is what holds the hub "
+                    "against pulling off)\n" :
+                    ", the hub slides off when the push-on force is "
+                    "released: secure it axially)\n");
+      }
     if (parameters.sections)
       table << "    (sections: the DIN 7190 column is the plain-cylinder "
                "estimate, a hub of D_aA = "

@@ -40,8 +40,15 @@ namespace coaxfit
     for (const double F : contact_force)
       sum += F;
     // 2 pi per radian, twice for a half model (its mirror image).
-    normal_force  = 2. * M_PI * parameters.geometry.mirror_factor() * sum;
-    mean_pressure = normal_force
+    normal_force = 2. * M_PI * parameters.geometry.mirror_factor() * sum;
+    // A cone's surface is pi D_F l_F / cos(beta), beta its half angle.
+    if (parameters.sections && parameters.sections->conical())
+      {
+        const double tan_beta = 0.5 * parameters.sections->taper();
+        cone_cos              = 1. / std::sqrt(1. + tan_beta * tan_beta);
+        cone_sin              = tan_beta * cone_cos;
+      }
+    mean_pressure = normal_force * cone_cos
                     / (M_PI * 2. * parameters.geometry.R1 * din.joint_length());
     pressure_din = din.pressure();
     compute_capacity(parameters, din);
@@ -63,6 +70,25 @@ namespace coaxfit
     press_in_force = design.press_in_friction_coefficient * normal_force;
     press_in_force_din
       = din.axial_force(pressure_din, design.press_in_friction_coefficient);
+    if (cone_sin > 0.)
+      {
+        // A cone: the normal force N over its surface (the estimate's
+        // p pi D_F l_F / cos), its axial part N sin against pushing on,
+        // friction mu N cos along the cone. Held against pulling off by
+        // N (mu cos - sin): none unless mu > tan(beta) (self-locking).
+        const double mu_e  = design.press_in_friction_coefficient;
+        const double N_din = din.axial_force(pressure_din, 1.) / cone_cos;
+        push_on_force      = normal_force * cone_sin;
+        push_on_force_din  = N_din * cone_sin;
+        press_in_force     = normal_force * (cone_sin + mu_e * cone_cos);
+        press_in_force_din = N_din * (cone_sin + mu_e * cone_cos);
+        axial_force_capacity
+          = std::max(0., normal_force * (mu * cone_cos - cone_sin));
+        axial_force_capacity_din
+          = std::max(0., N_din * (mu * cone_cos - cone_sin));
+        torque_capacity     = 1e-3 * mu * R_F * normal_force;
+        torque_capacity_din = 1e-3 * mu * R_F * N_din;
+      }
 
     // DIN 7190's resultant of a torque and an axial force on the joint:
     // the circumferential force 2 M / D_F and the axial force combined,

@@ -16,7 +16,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
+#include <string>
 
 namespace coaxfit
 {
@@ -62,12 +64,29 @@ namespace coaxfit
                                              Functions::ZeroFunction<2>(2),
                                              constraints,
                                              fe.component_mask(u_z));
-    // Without a symmetry plane (a whole section) nothing fixes the axial
-    // rigid motion: u_z = 0 at the joint node nearest the joint's middle.
-    // A frictionless joint passes no axial force, so this reaction is zero
-    // and the stresses do not depend on the choice.
+    // A held end face (a taper fit's supports): u_z = 0 on it, but at its
+    // corner on the joint, whose displacement the joint's normal frame
+    // describes (a contact node is free along the joint).
+    bool has_held_face = false;
+    {
+      const std::set<types::global_dof_index> on_joint(
+        interface_axial_dofs.begin(), interface_axial_dofs.end());
+      const IndexSet held
+        = DoFTools::extract_boundary_dofs(dof_handler,
+                                          fe.component_mask(u_z),
+                                          {BoundaryId::held});
+      for (const auto dof : held)
+        if (on_joint.count(dof) == 0 && !constraints.is_constrained(dof))
+          constraints.add_line(dof);
+      has_held_face = held.n_elements() > 0;
+    }
+    // Without a symmetry plane or a held face (a whole section on a
+    // cylinder) nothing fixes the axial rigid motion: u_z = 0 at the joint
+    // node nearest the joint's middle. A frictionless cylindrical joint
+    // passes no axial force, so this reaction is zero and the stresses do
+    // not depend on the choice.
     axial_pin = numbers::invalid_dof_index;
-    if (mesh_builder && !interface_z_coordinates.empty())
+    if (mesh_builder && !interface_z_coordinates.empty() && !has_held_face)
       {
         bool has_plane = false;
         for (const auto &face : triangulation.active_face_iterators())
@@ -392,12 +411,119 @@ namespace coaxfit
                        * fe_face_values.JxW(q);
               }
           }
-    // The coupling exchanges u_r and radial forces: it needs joints on
-    // cylinders r = const (n = +-e_r), which is what the mesh builder makes.
-    for (const Tensor<1, 2> &n : normals)
-      if (std::abs(n[1]) > 1e-12 || std::abs(std::abs(n[0]) - 1.) > 1e-12)
-        throw std::logic_error("the joint of a body is not a cylinder "
-                               "r = const");
+    // The interface value of a point is the displacement along the
+    // joint's normal pointing out of the shaft (u_r on a cylinder). A joint
+    // not on a cylinder (a cone) is solved in that frame (BodySolver).
+    frame.resize(normals.size());
+    rotated = false;
+    for (unsigned int i = 0; i < normals.size(); ++i)
+      {
+        if (!(normals[i][0] > 0.05 || normals[i][0] < -0.05))
+          throw std::logic_error("the joint of a body runs along its radius "
+                                 "(a face): not modelled");
+        frame[i] = normals[i][0] > 0. ? normals[i] : -normals[i];
+        rotated  = rotated || std::abs(frame[i][1]) > 1e-12;
+      }
+    if (rotated)
+      for (const auto dof : interface_dofs)
+        if (constraints.is_constrained(dof))
+          throw std::logic_error("a constrained joint node on a cone");
+  }
+
+
+
+  void
+  BodyDiscretization::to_interface_frame(Vector<double> &v) const
+  {
+    if (!rotated)
+      return;
+    for (unsigned int i = 0; i < frame.size(); ++i)
+      {
+        const double a = v[interface_dofs[i]], b = v[interface_axial_dofs[i]];
+        v[interface_dofs[i]]       = frame[i][0] * a + frame[i][1] * b;
+        v[interface_axial_dofs[i]] = -frame[i][1] * a + frame[i][0] * b;
+      }
+  }
+
+
+
+  void
+  BodyDiscretization::from_interface_frame(Vector<double> &v) const
+  {
+    if (!rotated)
+      return;
+    for (unsigned int i = 0; i < frame.size(); ++i)
+      {
+        const double n = v[interface_dofs[i]], t = v[interface_axial_dofs[i]];
+        v[interface_dofs[i]]       = frame[i][0] * n - frame[i][1] * t;
+        v[interface_axial_dofs[i]] = frame[i][1] * n + frame[i][0] * t;
+      }
+  }
+
+
+
+  const SparseMatrix<double> &
+  BodyDiscretization::stiffness_in_interface_frame(
+    SparseMatrix<double> &storage) const
+  {
+    if (!rotated)
+      return stiffness_matrix;
+    if (storage.empty())
+      {
+        storage.reinit(sparsity_pattern);
+        storage.copy_from(stiffness_matrix);
+        to_interface_frame(storage);
+      }
+    return storage;
+  }
+
+
+
+  void
+  BodyDiscretization::to_interface_frame(SparseMatrix<double> &K) const
+  {
+    if (!rotated)
+      return;
+    // K' = R^T K R with R the rotation of each joint node's (u_r, u_z)
+    // into (u_n, u_t): rows first (R^T K), then columns. Both DoFs of a
+    // node couple with the same DoFs (FESystem), so every entry exists.
+    const SparsityPattern &pattern = K.get_sparsity_pattern();
+    const auto             check   = [&](const types::global_dof_index i,
+                           const types::global_dof_index j) {
+      if (!pattern.exists(i, j))
+        throw std::logic_error("the joint frame needs the entry ("
+                               + std::to_string(i) + ", " + std::to_string(j)
+                               + ") of the sparsity pattern");
+    };
+    for (unsigned int i = 0; i < frame.size(); ++i)
+      {
+        const auto   a = interface_dofs[i], b = interface_axial_dofs[i];
+        const double c = frame[i][0], s = frame[i][1];
+        for (auto entry = K.begin(a); entry != K.end(a); ++entry)
+          {
+            const auto j = entry->column();
+            check(b, j);
+            const double ka = entry->value(), kb = K(b, j);
+            entry->value() = c * ka + s * kb;
+            K.set(b, j, -s * ka + c * kb);
+          }
+      }
+    for (unsigned int i = 0; i < frame.size(); ++i)
+      {
+        const auto   a = interface_dofs[i], b = interface_axial_dofs[i];
+        const double c = frame[i][0], s = frame[i][1];
+        for (auto entry = K.begin(a); entry != K.end(a); ++entry)
+          {
+            // The pattern is symmetric: the rows k with an entry in column
+            // a are the columns of row a.
+            const auto k = entry->column();
+            check(k, a);
+            check(k, b);
+            const double ka = K(k, a), kb = K(k, b);
+            K.set(k, a, c * ka + s * kb);
+            K.set(k, b, -s * ka + c * kb);
+          }
+      }
   }
 
 
@@ -416,11 +542,15 @@ namespace coaxfit
     stiffness_matrix.residual(residual, solution, Vector<double>(n_dofs()));
     u_r.reinit(dofs.size());
     force_out.reinit(dofs.size());
+    const Vector<double> u_n = interface_radial_values(solution);
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
-        u_r[i] = solution[dofs[i]];
+        u_r[i] = u_n[i];
         force_out[i]
-          = prescribed[i] ? normals[i][0] * residual[dofs[i]] : force[i];
+          = !prescribed[i] ? force[i] :
+            rotated        ? normals[i][0] * residual[dofs[i]]
+                        + normals[i][1] * residual[interface_axial_dofs[i]] :
+                      normals[i][0] * residual[dofs[i]];
       }
   }
 

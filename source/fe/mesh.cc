@@ -154,6 +154,8 @@ namespace coaxfit
           return "outer";
         case end:
           return "end";
+        case held:
+          return "held";
         default:
           return "untagged";
       }

@@ -114,14 +114,21 @@ namespace coaxfit
       throw InputError(both + "the sections meet in "
                        + std::to_string(pieces.size())
                        + " pieces; this version models a joint that is one "
-                         "cylinder (a relief groove in the bore, a shoulder "
-                         "face or a taper is not modelled yet)");
+                         "cylinder or one cone (a relief groove in the bore "
+                         "or a shoulder face is not modelled yet)");
     const JointPiece &joint = pieces.front();
-    if (std::abs(joint.start[0] - joint.end[0]) > tol)
-      throw InputError(both + "the joint from z = " + number(joint.start[1], 6)
-                       + " to " + number(joint.end[1], 6)
-                       + " is not a cylinder (a cone or a face); this "
-                         "version models cylindrical joints only");
+    // A cone up to 30 degrees from the axis (tapers are 1:50 to 1:5, 0.6 to
+    // 5.7 degrees); steeper joints are faces more than cones.
+    if (std::abs(joint.normal[0]) < std::cos(numbers::PI / 6.))
+      throw InputError(
+        both + "the joint from z = " + number(joint.start[1], 6) + ", D = "
+        + number(2. * joint.start[0], 6) + " to z = " + number(joint.end[1], 6)
+        + ", D = " + number(2. * joint.end[0], 6) + " is inclined "
+        + number(std::acos(std::min(1., std::abs(joint.normal[0]))) * 180.
+                   / numbers::PI,
+                 3)
+        + " degrees to the axis; allowed: a cylinder or a cone up to 30 "
+          "degrees (a face against a shoulder is not modelled yet)");
     if (joint.normal[0] < 0.)
       throw InputError(both
                        + "the shaft's section lies outside the hub's at "
@@ -144,9 +151,12 @@ namespace coaxfit
                   "joint would end at its tangent point as at a sharp "
                   "edge, with a wrong pressure peak); draw the edge sharp "
                   "or chamfered");
-    radius            = joint.start[0];
+    cone              = std::abs(joint.start[0] - joint.end[0]) > tol;
     const double z_lo = std::min(joint.start[1], joint.end[1]);
     const double z_hi = std::max(joint.start[1], joint.end[1]);
+    r_start = joint.start[1] <= joint.end[1] ? joint.start[0] : joint.end[0];
+    r_end   = joint.start[1] <= joint.end[1] ? joint.end[0] : joint.start[0];
+    radius  = 0.5 * (r_start + r_end);
     half_length       = 0.5 * (z_hi - z_lo);
     hub_mean_outer    = mean_outer_diameter(*hub_drawn, z_lo, z_hi);
     const auto [a, b] = axial_range(*shaft_drawn);
@@ -230,12 +240,33 @@ namespace coaxfit
     if (!half)
       {
         for (const double x : from_middle)
-          vertices.emplace_back(radius, middle - x);
+          vertices.emplace_back(joint_radius_at(middle - x), middle - x);
         vertices.emplace_back(radius, middle);
       }
     for (auto x = from_middle.rbegin(); x != from_middle.rend(); ++x)
-      vertices.emplace_back(radius, middle + *x);
+      vertices.emplace_back(joint_radius_at(middle + *x), middle + *x);
     return vertices;
+  }
+
+
+
+  double
+  SectionScene::joint_radius_at(const double z) const
+  {
+    if (!cone)
+      return radius;
+    const double t = (z - joint_start()) / (joint_end() - joint_start());
+    return r_start + t * (r_end - r_start);
+  }
+
+
+
+  TaggedSegment
+  SectionScene::joint_segment() const
+  {
+    return TaggedSegment{Point<2>(r_start, joint_start()),
+                         Point<2>(r_end, joint_end()),
+                         BoundaryId::joint};
   }
 
 
@@ -245,10 +276,10 @@ namespace coaxfit
                             Triangulation<2>          &hub,
                             const SectionMeshSettings &settings) const
   {
-    const Point<2> start(radius, joint_start()), end(radius, joint_end());
+    const Point<2> end  = joint_segment().end;
     const double  h_max = settings.max_cell_size > 0. ? settings.max_cell_size :
                                                         8. * settings.cell_size;
-    TaggedSegment joint{start, end, BoundaryId::joint};
+    TaggedSegment joint = joint_segment();
     joint.vertices
       = joint_vertices(settings.cell_size, settings.grading_ratio, h_max);
     // A corner of either outline inside the joint (on a straight line)
@@ -262,7 +293,7 @@ namespace coaxfit
         z.push_back(v[1]);
       for (const bool shaft_side : {true, false})
         for (const OutlineCorner &c : modelled(shaft_side).corners())
-          if (std::abs(0.5 * c.diameter - radius) <= tol
+          if (std::abs(0.5 * c.diameter - joint_radius_at(c.z)) <= tol
               && c.z > joint_start() + tol && c.z < joint_end() - tol)
             {
               std::vector<double> all = {joint_start()};
@@ -284,7 +315,7 @@ namespace coaxfit
       std::sort(z.begin(), z.end());
       joint.vertices.clear();
       for (const double zi : z)
-        joint.vertices.emplace_back(radius, zi);
+        joint.vertices.emplace_back(joint_radius_at(zi), zi);
     }
     // The middle of a half model's joint is no end.
     joint.refine_ends = !half;
@@ -299,11 +330,11 @@ namespace coaxfit
       local.full_quad = full_quad;
       const bool a    = make_section_mesh(shaft,
                                        modelled(true),
-                                       boundary(modelled(true), joint),
+                                       boundary(modelled(true), joint, true),
                                        local);
       const bool b    = make_section_mesh(hub,
                                        modelled(false),
-                                       boundary(modelled(false), joint),
+                                       boundary(modelled(false), joint, false),
                                        local);
       return a == b;
     };
@@ -315,7 +346,8 @@ namespace coaxfit
 
   SectionBoundary
   SectionScene::boundary(const SectionOutline &outline,
-                         const TaggedSegment  &joint) const
+                         const TaggedSegment  &joint,
+                         const bool            shaft) const
   {
     SectionBoundary result;
     result.segments.push_back(joint);
@@ -328,6 +360,35 @@ namespace coaxfit
           plane.refine_ends = false;
           result.segments.push_back(plane);
         }
+    if (!cone)
+      return result;
+    // A cone: the shaft held at its end face on the side the hub is pushed
+    // towards, the hub at its end face on the other side (where the press
+    // pushes it).
+    const double direction = shaft ? push_direction() : -push_direction();
+    double       z_face    = outline.corners().front().z;
+    for (const OutlineCorner &c : outline.corners())
+      z_face = direction > 0. ? std::max(z_face, c.z) : std::min(z_face, c.z);
+    bool found = false;
+    for (const OutlineEdge &edge : outline.edges())
+      if (!edge.is_arc() && std::abs(edge.start[1] - z_face) <= tol
+          && std::abs(edge.end[1] - z_face) <= tol
+          && edge.start.distance(edge.end) > tol)
+        {
+          TaggedSegment face{edge.start, edge.end, BoundaryId::held};
+          face.refine_ends = false;
+          result.segments.push_back(face);
+          found = true;
+        }
+    if (!found)
+      throw InputError(
+        "parameter " + outline.entry() + ": a taper fit holds the "
+        + std::string(shaft ? "shaft at its end face" : "hub at the face")
+        + " at z = " + number(z_face + z_m, 6) + " ("
+        + (shaft ? "the side the hub is pushed towards" :
+                   "where the hub is pushed on")
+        + "), but the section has no flat face (an edge of constant z) "
+          "there; draw that end flat");
     return result;
   }
 
@@ -339,9 +400,9 @@ namespace coaxfit
                                 const SectionMeshSettings &shaft_settings,
                                 const SectionMeshSettings &hub_settings) const
   {
-    const Point<2> start(radius, joint_start()), end(radius, joint_end());
-    TaggedSegment  joint{start, end, BoundaryId::joint};
-    joint.refine_ends = !half; // the middle of a half model is no end
+    const Point<2> end   = joint_segment().end;
+    TaggedSegment  joint = joint_segment();
+    joint.refine_ends    = !half; // the middle of a half model is no end
     for (const bool is_shaft : {true, false})
       {
         SectionMeshSettings local = is_shaft ? shaft_settings : hub_settings;
@@ -352,7 +413,7 @@ namespace coaxfit
         mesh.clear();
         make_section_mesh(mesh,
                           modelled(is_shaft),
-                          boundary(modelled(is_shaft), joint),
+                          boundary(modelled(is_shaft), joint, is_shaft),
                           local);
       }
   }

@@ -1,6 +1,7 @@
 #include <coaxfit/fe/section_scene.h>
 #include <coaxfit/io/result_writers.h>
 
+#include <cmath>
 #include <fstream>
 
 namespace coaxfit
@@ -21,9 +22,15 @@ namespace coaxfit
       = results.interface.load_displacement(ContactInterface::Side::outer);
     // Sections: the drawing's z as well (a half model's z is measured
     // from its plane of symmetry).
+    // A cone: the displacements are along the joint's normal, and the arc
+    // length s runs along the joint from its end of smaller z.
     const SectionScene *sections = results.parameters.sections.get();
-    out << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status"
-        << (sections ? ",z_drawing_mm\n" : "\n");
+    const bool          cone     = sections && sections->conical();
+    out << (cone ? "z_mm,pressure_MPa,u_n_shaft_mm,u_n_hub_mm,gap_mm,status" :
+                   "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status")
+        << (sections ? ",z_drawing_mm" : "") << (cone ? ",s_mm\n" : "\n");
+    const double ds_dz
+      = cone ? std::sqrt(1. + std::pow(0.5 * sections->taper(), 2)) : 1.;
     for (unsigned int i = 0; i < results.interface.n_points(); ++i)
       {
         out << results.interface.z()[i] << ',' << results.pressure.pressure[i]
@@ -33,6 +40,9 @@ namespace coaxfit
                                                           ",separated");
         if (sections)
           out << ',' << results.interface.z()[i] + sections->drawing_offset();
+        if (cone)
+          out << ','
+              << (results.interface.z()[i] - results.interface.z()[0]) * ds_dz;
         out << '\n';
       }
     close_result_file(out, directory + "/" + name);

@@ -174,6 +174,40 @@ namespace coaxfit
       return j;
     }
 
+    /**
+     * A taper fit: the cone, the push-on distance and the interference it
+     * makes, the push-on force and whether the joint is self-locking.
+     */
+    Json
+    taper(const RunResults &results)
+    {
+      const Parameters   &p  = results.parameters;
+      const FitDesign    &d  = results.design;
+      const SectionScene &s  = *p.sections;
+      const double        C  = s.taper();
+      const double        mu = p.design.friction_coefficient;
+      return {{"units", "mm, N, degrees"},
+              {"taper", C},
+              {"half_angle", std::atan(0.5 * C) * 180. / M_PI},
+              {"diameter_small",
+               2.
+                 * s.joint_radius_at(s.push_direction() > 0. ? s.joint_start() :
+                                                               s.joint_end())},
+              {"diameter_large",
+               2.
+                 * s.joint_radius_at(
+                   s.push_direction() > 0. ? s.joint_end() : s.joint_start())},
+              {"push_on_distance", p.fit.push_on_distance},
+              {"push_direction", s.push_direction()},
+              {"diametral_interference", p.fit.push_on_distance * C},
+              {"push_on_force_frictionless", d.push_on_force},
+              {"push_on_force_frictionless_estimate", d.push_on_force_din},
+              {"self_locking", mu > 0.5 * C},
+              {"friction_coefficient", mu}};
+    }
+
+
+
     Json
     design(const RunResults &results)
     {
@@ -330,17 +364,19 @@ namespace coaxfit
       = results.solver.steps_to_displacement_mismatch(1e-2);
     j.update(geometry_and_mesh(results));
     j.update(coupling_and_solver(results));
-    j["pressure"]  = {{"units", "MPa, compression positive"},
-                      {"at_mid_plane", ps.at_mid_plane},
-                      {"mean", ps.mean},
-                      {"min", ps.min},
-                      {"z_of_min", ps.z_of_min},
-                      {"max", ps.max},
-                      {"z_of_max", ps.z_of_max},
-                      {"lame", ps.lame},
-                      {"tensile", ps.min < 0.}};
-    j["contact"]   = contact(results);
-    j["design"]    = design(results);
+    j["pressure"] = {{"units", "MPa, compression positive"},
+                     {"at_mid_plane", ps.at_mid_plane},
+                     {"mean", ps.mean},
+                     {"min", ps.min},
+                     {"z_of_min", ps.z_of_min},
+                     {"max", ps.max},
+                     {"z_of_max", ps.z_of_max},
+                     {"lame", ps.lame},
+                     {"tensile", ps.min < 0.}};
+    j["contact"]  = contact(results);
+    j["design"]   = design(results);
+    if (results.parameters.sections && results.parameters.sections->conical())
+      j["taper"] = taper(results);
     j["operation"] = operation(results);
     j["active_set"]
       = {{"changes", results.solver.get_active_set().n_changes()}};

@@ -230,6 +230,39 @@ namespace coaxfit
                                "used: the sections are meshed by Mesh/Cell "
                                "size");
     }
+
+    /**
+     * A taper fit: the interference comes from Fit/Push-on distance
+     * (U = a C), not from Fit/Diametral interference or an ISO fit.
+     */
+    void
+    complete_taper(Parameters &p, const bool interference_given)
+    {
+      const std::string why
+        = " with sections that meet on a cone (a taper fit "
+          + number(p.sections->taper(), 6)
+          + "): Fit/Push-on distance sets the interference (U = a C)";
+      if (interference_given)
+        throw InputError("parameter Fit/Diametral interference is given" + why
+                         + "; leave it out");
+      if (!p.fit.iso_fit.empty())
+        throw InputError("parameter Fit/ISO fit = " + p.fit.iso_fit
+                         + " is given" + why + "; leave it out");
+      if (p.design.mode == DesignMode::select)
+        throw InputError("parameter Design/Mode = select is not allowed" + why
+                         + "; give it and Design/Mode = check (choosing a "
+                           "push-on distance is not modelled yet)");
+      const double D = 2. * p.sections->joint_radius();
+      const double C = p.sections->taper();
+      require(p.fit.push_on_distance > 0.
+                && p.fit.push_on_distance * C <= 0.1 * D,
+              "Fit/Push-on distance",
+              p.fit.push_on_distance,
+              "a > 0 with a C <= 0.1 D_F for the taper C = " + number(C, 6)
+                + " on D_F = " + number(D) + " mm (a <= " + number(0.1 * D / C)
+                + " mm)");
+      p.fit.diametral_interference = p.fit.push_on_distance * C;
+    }
   } // namespace
 
 
@@ -244,7 +277,17 @@ namespace coaxfit
     // A selection chooses the interference itself.
     const bool interference_given
       = missing.count("Fit.Diametral interference") == 0;
-    if (p.design.mode == DesignMode::select)
+    const bool taper = p.sections && p.sections->conical();
+    if (taper)
+      complete_taper(p, interference_given);
+    else if (p.fit.push_on_distance != 0.)
+      throw InputError("parameter Fit/Push-on distance = "
+                       + number(p.fit.push_on_distance)
+                       + " mm: allowed only for a taper fit (sections that "
+                         "meet on a cone); give 0 or leave it out");
+    if (taper)
+      missing.erase("Fit.Diametral interference");
+    else if (p.design.mode == DesignMode::select)
       missing.erase("Fit.Diametral interference");
     else if (!p.fit.iso_fit.empty())
       {
@@ -306,6 +349,8 @@ namespace coaxfit
           fit.diametral_interference = 1e-3 * D;
       }
     p.fit_limits = fit_limits_of(fit, p.drawing.joint_diameter);
+    if (taper)
+      p.fit_limits.source = "Fit/Push-on distance";
     if (p.design.mode == DesignMode::check)
       check_effective_interference(p);
     p.derive_model();

@@ -207,6 +207,17 @@ namespace coaxfit
                       "micrometres (see Shaft roughness Rz). Allowed: 0 to "
                       "1000.",
                       Patterns::Double(0., 1000.));
+    prm.add_parameter("Push-on distance",
+                      push_on_distance,
+                      "For a taper fit only (Geometry/Shaft section and Hub "
+                      "section meeting on a cone): how far in mm the hub is "
+                      "pushed along the axis, towards the cone's larger "
+                      "diameter, from where the drawn sections touch. It "
+                      "sets the interference: U = a C (C the taper, 0.1 "
+                      "for 1:10); Diametral interference and ISO fit are "
+                      "then left out. 0: not a taper fit. Allowed with a "
+                      "cone: a > 0 with a C <= 0.1 D_F.",
+                      Patterns::Double(0.));
     prm.leave_subsection();
   }
 

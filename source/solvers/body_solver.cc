@@ -18,13 +18,13 @@ namespace coaxfit
 
 
   SparseMatrix<double>
-  BodySolver::eliminated_matrix(const std::vector<bool> &prescribed) const
+  BodySolver::eliminated_matrix(const std::vector<bool> &prescribed)
   {
     // K with the rows and columns of the prescribed points eliminated
     // symmetrically; the diagonal entries stay.
     const auto          &dofs = body.get_interface_dofs();
     SparseMatrix<double> matrix(body.get_sparsity_pattern());
-    matrix.copy_from(body.get_stiffness_matrix());
+    matrix.copy_from(stiffness());
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (prescribed[i])
         for (auto entry = matrix.begin(dofs[i]); entry != matrix.end(dofs[i]);
@@ -142,12 +142,14 @@ namespace coaxfit
                           const Vector<double>    &force)
   {
     const auto                 &dofs   = body.get_interface_dofs();
-    const SparseMatrix<double> &K      = body.get_stiffness_matrix();
+    const SparseMatrix<double> &K      = stiffness();
     const auto                 &normal = body.interface_normals();
     AssertDimension(prescribed.size(), dofs.size());
 
     // Contact forces act against the outward normal; prescribed points
-    // are lifted and eliminated symmetrically.
+    // are lifted and eliminated symmetrically. In the joint's frame (a
+    // cone) the DoF of point i is u . n_i, n_i the frame's normal, and the
+    // force's component along it is -(outward normal . n_i) = -+1.
     Vector<double> rhs(body.n_dofs());
     Vector<double> lift(body.n_dofs());
     bool           any_prescribed = false;
@@ -157,6 +159,8 @@ namespace coaxfit
           lift[dofs[i]]  = displacement[i];
           any_prescribed = true;
         }
+      else if (body.rotated_frame())
+        rhs[dofs[i]] = normal[i][0] > 0. ? -force[i] : force[i];
       else
         rhs[dofs[i]] = -normal[i][0] * force[i];
     if (any_prescribed)
@@ -171,6 +175,7 @@ namespace coaxfit
 
     solve_system(prescribed, rhs);
     ++solve_count;
+    body.from_interface_frame(rhs);
     body.get_constraints().distribute(rhs);
     return rhs;
   }
@@ -182,8 +187,10 @@ namespace coaxfit
   {
     AssertDimension(load.size(), body.n_dofs());
     Vector<double> field(load);
+    body.to_interface_frame(field);
     solve_system(std::vector<bool>(body.n_interface_points(), false), field);
     ++solve_count;
+    body.from_interface_frame(field);
     body.get_constraints().distribute(field);
     return field;
   }
@@ -214,10 +221,21 @@ namespace coaxfit
                            "solver (Solver/Linear solver = direct)"));
     const std::vector<bool> none(body.n_interface_points(), false);
     cholesky.trailing_inverse(factorization(none), compliance);
-    // A unit contact force at point j is the load -n_j e_j (n_j = +-e_r).
+    // A unit contact force at point j is the load -n_j e_j (n_j = +-e_r),
+    // in the joint's frame -+1 along its DoF.
     const auto &normal = body.interface_normals();
     for (unsigned int i = 0; i < compliance.m(); ++i)
       for (unsigned int j = 0; j < compliance.n(); ++j)
-        compliance(i, j) *= -normal[j][0];
+        compliance(i, j) *= body.rotated_frame() ?
+                              (normal[j][0] > 0. ? -1. : 1.) :
+                              -normal[j][0];
+  }
+
+
+
+  const SparseMatrix<double> &
+  BodySolver::stiffness()
+  {
+    return body.stiffness_in_interface_frame(rotated_stiffness);
   }
 } // namespace coaxfit

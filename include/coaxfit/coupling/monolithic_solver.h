@@ -72,12 +72,14 @@ namespace coaxfit
 
     const BodyDiscretization &shaft;
     const BodyDiscretization &hub;
-    Vector<double>            shaft_field, hub_field;
-    const ContactInterface   &interface;
-    const unsigned int        max_steps;
-    unsigned int              factorizations = 0;
-    SparsityPattern           pattern;
-    SparseCholesky            cholesky;
+    /** The bodies' stiffness in the joint's frame (a cone). */
+    SparseMatrix<double>    shaft_rotated, hub_rotated;
+    Vector<double>          shaft_field, hub_field;
+    const ContactInterface &interface;
+    const unsigned int      max_steps;
+    unsigned int            factorizations = 0;
+    SparsityPattern         pattern;
+    SparseCholesky          cholesky;
   };
 } // namespace coaxfit
 

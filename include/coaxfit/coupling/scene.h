@@ -66,13 +66,16 @@ namespace coaxfit
    * Two bodies whose tagged joint surfaces (BoundaryId::joint) touch: the
    * inner one (whose outward normal on the joint points away from the
    * axis) and the outer one, as indices into Scene::bodies, and the
-   * radial interference of the drawing between them.
+   * interference of the drawing between them: radial on a cylinder, along
+   * the joint's normal on a cone (the radial one times cos of the half
+   * angle: a hub pushed by a along a taper C overlaps a sin(atan(C/2))).
    */
   struct JointSides
   {
     unsigned int inner;
     unsigned int outer;
-    double       interference; ///< mm, radial
+    double       interference;        ///< mm, along the joint's normal
+    double       radial_interference; ///< mm
   };
 
 

@@ -72,8 +72,21 @@ namespace coaxfit
 
     /** Normal force over the whole joint (N), FE. */
     double normal_force;
-    /** Mean FE pressure over the nominal joint area pi D_F l_F (MPa). */
+    /**
+     * Mean FE pressure over the nominal joint area pi D_F l_F (MPa), on a
+     * cone over its surface pi D_F l_F / cos(beta).
+     */
     double mean_pressure;
+    /**
+     * A taper fit's cone (half angle beta): cos and sin of beta (1 and 0 on
+     * a cylinder). On a cone the capacities take the normal force N over
+     * the cone's surface: torque mu N R_F, axial force against pulling off
+     * N (mu cos - sin) (0 if not self-locking), press-in (push-on) force
+     * N (sin + mu_e cos).
+     */
+    double cone_cos = 1., cone_sin = 0.;
+    /** A cone's push-on force without friction, N sin(beta) (N; 0). */
+    double push_on_force = 0., push_on_force_din = 0.;
     double pressure_din;
     double torque_capacity, torque_capacity_din;           ///< N m
     double axial_force_capacity, axial_force_capacity_din; ///< N

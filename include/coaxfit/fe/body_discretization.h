@@ -174,15 +174,61 @@ namespace coaxfit
                      Vector<double>          &u_r,
                      Vector<double>          &force_out) const;
 
-    /** The values of u_r of @p field at the interface points. */
+    /**
+     * The interface values of @p field at the interface points: u . n,
+     * n = interface_frame() (u_r on a cylinder).
+     */
     Vector<double>
     interface_radial_values(const Vector<double> &field) const
     {
       Vector<double> u_r(interface_dofs.size());
       for (unsigned int i = 0; i < interface_dofs.size(); ++i)
-        u_r[i] = field[interface_dofs[i]];
+        u_r[i] = rotated ? frame[i][0] * field[interface_dofs[i]]
+                             + frame[i][1] * field[interface_axial_dofs[i]] :
+                           field[interface_dofs[i]];
       return u_r;
     }
+
+    /**
+     * The direction of each interface point's value: the joint's unit
+     * normal pointing out of the shaft (e_r on a cylinder), the same for
+     * both bodies, so that u2 . n = u1 . n + d closes an interference d.
+     */
+    const std::vector<Tensor<1, 2>> &
+    interface_frame() const
+    {
+      return frame;
+    }
+
+    /**
+     * Whether the joint is not a cylinder (a cone): then BodySolver solves
+     * in the joint's frame, each joint node's (u_r, u_z) DoFs replaced by
+     * (u . n, u . t) with n = interface_frame(), t = (-n_z, n_r).
+     */
+    bool
+    rotated_frame() const
+    {
+      return rotated;
+    }
+
+    /** @p v (a vector over the DoFs) into the joint's frame: R^T v. */
+    void
+    to_interface_frame(Vector<double> &v) const;
+
+    /** @p v from the joint's frame back to (u_r, u_z): R v. */
+    void
+    from_interface_frame(Vector<double> &v) const;
+
+    /** The stiffness @p K into the joint's frame: R^T K R. */
+    void
+    to_interface_frame(SparseMatrix<double> &K) const;
+
+    /**
+     * The stiffness in the frame the solves use: K on a cylinder, else
+     * R^T K R, made into @p storage when it is empty and kept there.
+     */
+    const SparseMatrix<double> &
+    stiffness_in_interface_frame(SparseMatrix<double> &storage) const;
     /** The (r, z) support point of each interface point. */
     const std::vector<Point<2>> &
     interface_points() const
@@ -213,8 +259,8 @@ namespace coaxfit
     /**
      * The body's outward unit normal at each interface point, from the
      * faces tagged BoundaryId::joint. Contact forces act along -n; the
-     * interface displacement is u_r (joints of this version lie on
-     * cylinders r = const, where n = +-e_r).
+     * interface displacement is u . interface_frame() (u_r on a cylinder
+     * r = const, where n = +-e_r).
      */
     const std::vector<Tensor<1, 2>> &
     interface_normals() const
@@ -345,6 +391,8 @@ namespace coaxfit
     std::vector<Point<2>>                points;
     Vector<double>                       weights;
     std::vector<Tensor<1, 2>>            normals;
+    std::vector<Tensor<1, 2>>            frame; ///< interface_frame()
+    bool                                 rotated   = false;
     types::global_dof_index              axial_pin = numbers::invalid_dof_index;
   };
 } // namespace coaxfit

@@ -26,6 +26,11 @@ namespace coaxfit
     constexpr types::boundary_id bore     = 3; ///< free inner surface
     constexpr types::boundary_id outer    = 4; ///< free outer surface
     constexpr types::boundary_id end      = 5; ///< free end face
+    /**
+     * An end face held axially (u_z = 0): a taper fit's supports (7: 6 is
+     * SectionId::free, a section's untagged surface).
+     */
+    constexpr types::boundary_id held = 7;
 
     /** The name of @p id for messages and output ("joint", "bore", ...). */
     const char *

@@ -5,6 +5,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
 
+#include <coaxfit/fe/mesh.h>
 #include <coaxfit/fe/section_outline.h>
 
 #include <vector>
@@ -30,6 +31,11 @@ namespace coaxfit
      */
     constexpr types::manifold_id first_arc = 1;
   } // namespace SectionId
+
+  static_assert(SectionId::free != BoundaryId::held
+                  && SectionId::free > BoundaryId::end
+                  && SectionId::first_named > BoundaryId::held,
+                "the ids of a section's faces must differ from BoundaryId's");
 
   /**
    * A part of a section's boundary that gets its own boundary id, for

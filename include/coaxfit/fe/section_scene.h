@@ -6,6 +6,7 @@
 #include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/fe/section_outline.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,14 +21,19 @@ namespace coaxfit
    * joint), the plane about which the scene is symmetric, and the
    * sections the model meshes.
    *
-   * This version models scenes whose joint is one cylinder. A scene
+   * This version models scenes whose joint is one straight piece: a
+   * cylinder or a cone (a taper fit). A scene
    * symmetric about a plane z = z_m is modelled as its half z >= z_m of
    * each section, shifted so that the plane is z = 0 of the model (u_z = 0
    * there, as the plain cylinders have it), the joint from z = 0 to its
    * half length. Any other scene (a hub flush with the shaft end, a
    * shoulder beside the hub) is modelled whole in the drawing's
    * coordinates, each body's axial rigid motion fixed at its joint node
-   * nearest the joint's middle (BodyDiscretization). A taper, a joint of
+   * nearest the joint's middle (BodyDiscretization). A cone passes axial
+   * force: the hub is pushed on along the axis towards the cone's larger
+   * diameter (Fit/Push-on distance), so its flat end face on the other
+   * side is held (BoundaryId::held, u_z = 0), and the shaft is held at its
+   * flat end face on the side the hub is pushed towards. A joint of
    * several pieces or against a shoulder face is refused with one line
    * naming both entries; see doc/real_parts.md for what comes next.
    *
@@ -84,11 +90,42 @@ namespace coaxfit
       return half ? half_length : z_start + 2. * half_length;
     }
 
-    /** Joint radius R_F (mm). */
+    /** Joint radius R_F (mm): a cone's mean radius. */
     double
     joint_radius() const
     {
       return radius;
+    }
+
+    /** Whether the joint is a cone (a taper fit). */
+    bool
+    conical() const
+    {
+      return cone;
+    }
+
+    /** The joint's radius at model z @p z (mm; linear on a cone). */
+    double
+    joint_radius_at(double z) const;
+
+    /**
+     * The taper C = (D_large - D_small) / l_F of a conical joint (0 on a
+     * cylinder): 0.1 for a taper 1:10.
+     */
+    double
+    taper() const
+    {
+      return 2. * std::abs(r_end - r_start) / joint_length();
+    }
+
+    /**
+     * The direction along the axis (+1 or -1) in which the hub is pushed
+     * onto a cone: towards its larger diameter.
+     */
+    double
+    push_direction() const
+    {
+      return r_end >= r_start ? 1. : -1.;
     }
 
     /** Joint length l_F (mm), the whole joint. */
@@ -182,15 +219,25 @@ namespace coaxfit
 
   private:
     /**
-     * The boundary of the mesh of @p outline: the joint @p joint and, for a
-     * half model, the plane of symmetry.
+     * The boundary of the mesh of @p outline: the joint @p joint, for a
+     * half model the plane of symmetry, for a cone the held end face of the
+     * body (@p shaft or the hub).
      */
     SectionBoundary
-    boundary(const SectionOutline &outline, const TaggedSegment &joint) const;
+    boundary(const SectionOutline &outline,
+             const TaggedSegment  &joint,
+             bool                  shaft) const;
+
+    /** The joint as a tagged segment from its start to its end. */
+    TaggedSegment
+    joint_segment() const;
 
     std::unique_ptr<SectionOutline> shaft_drawn, hub_drawn;
     std::unique_ptr<SectionOutline> shaft_half, hub_half;
     double                          radius         = 0.;
+    double                          r_start        = 0.; ///< at joint_start
+    double                          r_end          = 0.; ///< at joint_end
+    bool                            cone           = false;
     double                          half_length    = 0.;
     double                          z_m            = 0.;
     double                          z_start        = 0.; ///< drawing

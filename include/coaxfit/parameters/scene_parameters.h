@@ -61,9 +61,10 @@ namespace coaxfit
   {
     double      diametral_interference = 0.5; ///< U (mm)
     std::string iso_fit;                      ///< e.g. "H7/s6"; empty: none
-    FitCase     fit_case        = FitCase::mean;
-    double      shaft_roughness = 0.; ///< Rz of the shaft (micrometres)
-    double      hub_roughness   = 0.; ///< Rz of the hub bore (micrometres)
+    FitCase     fit_case         = FitCase::mean;
+    double      shaft_roughness  = 0.; ///< Rz of the shaft (micrometres)
+    double      hub_roughness    = 0.; ///< Rz of the hub bore (micrometres)
+    double      push_on_distance = 0.; ///< a (mm) of a taper fit; 0: none
 
     void
     declare_parameters(ParameterHandler &prm);

@@ -119,9 +119,16 @@ namespace coaxfit
     const AmgSystem &
     amg_system(const std::vector<bool> &prescribed);
 
+    /**
+     * The body's stiffness in the frame its solves use: K, or for a
+     * joint on a cone K in the joint's frame (made when first asked for).
+     */
+    const SparseMatrix<double> &
+    stiffness();
+
     /** K with the prescribed points' rows and columns eliminated. */
     SparseMatrix<double>
-    eliminated_matrix(const std::vector<bool> &prescribed) const;
+    eliminated_matrix(const std::vector<bool> &prescribed);
 
     /** Overwrite @p rhs with the solution of the system of @p prescribed. */
     void
@@ -135,6 +142,7 @@ namespace coaxfit
     const bool                                 amg;
     FactorizationCache<AmgSystem>              amg_systems;
     unsigned int                               cg_iterations = 0;
+    SparseMatrix<double>                       rotated_stiffness;
   };
 } // namespace coaxfit
 

@@ -1,0 +1,125 @@
+// The figures of a run of the executable that the section tests compare:
+// summary.json's pressures and contact_pressure.csv's profile.
+#ifndef coaxfit_tests_run_summary_h
+#define coaxfit_tests_run_summary_h
+
+#include "run_executable.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace coaxfit_test
+{
+  /** Options that keep a test run to summary.json and the CSV files. */
+  inline const std::string quiet
+    = " --set \"Output/Write vtu=false\" --set \"Output/Write plots=false\" ";
+
+  struct Result
+  {
+    int                                    exit_code;
+    double                                 mean = 0., at_mid_plane = 0.;
+    std::string                            coupling; ///< of the joint
+    std::vector<std::pair<double, double>> profile;  // z, p
+    nlohmann::json                         summary;  ///< summary.json
+    /** p at @p z, linear between the points of contact_pressure.csv. */
+    double
+    at(const double z) const
+    {
+      for (unsigned int i = 1; i < profile.size(); ++i)
+        if (profile[i].first >= z)
+          {
+            const auto &[z0, p0] = profile[i - 1];
+            const auto &[z1, p1] = profile[i];
+            return p0 + (p1 - p0) * (z - z0) / (z1 - z0);
+          }
+      return NAN;
+    }
+  };
+
+  inline Result
+  run(const std::string &dir, const std::string &arguments)
+  {
+    std::filesystem::remove_all(dir);
+    Result result;
+    result.exit_code
+      = coaxfit_test::run_coaxfit(dir, quiet + arguments).exit_code;
+    std::ifstream in(dir + "/summary.json");
+    if (!in)
+      return result;
+    const auto summary  = nlohmann::json::parse(in);
+    result.mean         = summary["pressure"]["mean"];
+    result.at_mid_plane = summary["pressure"]["at_mid_plane"];
+    if (summary["mesh"].contains("joint_coupling"))
+      result.coupling = summary["mesh"]["joint_coupling"];
+    result.summary = summary;
+    std::ifstream csv(dir + "/contact_pressure.csv");
+    std::string   line;
+    std::getline(csv, line);
+    while (std::getline(csv, line))
+      {
+        std::istringstream row(line);
+        std::string        z, p;
+        std::getline(row, z, ',');
+        std::getline(row, p, ',');
+        result.profile.emplace_back(std::stod(z), std::stod(p));
+      }
+    return result;
+  }
+
+  inline bool
+  close(const double a, const double b, const double tolerance)
+  {
+    return std::abs(a - b) <= tolerance * std::abs(b);
+  }
+
+
+  /**
+   * Refinement study of the parameter file @p file (runs into @p name_0,
+   * _1, _2): the mean pressure and
+   * the pressure at the points @p z at Global refinements 0, 1, 2, printed
+   * with the changes of the mean and its observed order of convergence.
+   */
+  inline void
+  refinement_study(const std::string         &name,
+                   const std::string         &file,
+                   const std::vector<double> &z,
+                   std::ostream              &out)
+  {
+    out << "refinement study of "
+        << std::filesystem::path(file).filename().string() << " (mean";
+    for (const double zi : z)
+      out << ", p(" << std::defaultfloat << zi << ")";
+    out << " in MPa):\n";
+    std::vector<std::vector<double>> levels;
+    for (unsigned int r = 0; r < 3; ++r)
+      {
+        const Result level = run(name + "_" + std::to_string(r),
+                                 "--set \"Mesh/Global refinements="
+                                   + std::to_string(r) + "\" " + file);
+        levels.push_back({level.mean});
+        for (const double zi : z)
+          levels.back().push_back(level.at(zi));
+        out << "  refinements " << r << ": exit " << level.exit_code;
+        for (const double v : levels.back())
+          out << "  " << std::fixed << std::setprecision(4) << v;
+        out << '\n';
+      }
+    out << "  mean: change " << std::scientific << std::setprecision(1)
+        << std::abs(levels[1][0] - levels[0][0]) / levels[2][0] << " then "
+        << std::abs(levels[2][0] - levels[1][0]) / levels[2][0]
+        << " of the value, order " << std::fixed
+        << std::log2(std::abs(levels[1][0] - levels[0][0])
+                     / std::abs(levels[2][0] - levels[1][0]))
+        << '\n';
+  }
+} // namespace coaxfit_test
+
+#endif

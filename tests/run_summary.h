@@ -81,6 +81,23 @@ namespace coaxfit_test
   }
 
 
+  /** The largest difference of two pressure profiles over the largest. */
+  inline double
+  profile_difference(const Result &a, const Result &b)
+  {
+    if (a.profile.size() != b.profile.size() || a.profile.empty())
+      return INFINITY;
+    double difference = 0., largest = 0.;
+    for (unsigned int i = 0; i < a.profile.size(); ++i)
+      {
+        difference
+          = std::max(difference,
+                     std::abs(a.profile[i].second - b.profile[i].second));
+        largest = std::max(largest, std::abs(b.profile[i].second));
+      }
+    return difference / largest;
+  }
+
   /**
    * Refinement study of the parameter file @p file (runs into @p name_0,
    * _1, _2): the mean pressure and

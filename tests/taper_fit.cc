@@ -17,8 +17,8 @@
 //    (points of contact_pressure.csv interpolated linearly).
 // 2. The same against the thick-walled estimate (U = a C at the mean
 //    diameter, plane stress): the ratios printed (the FE's end effects).
-// 3. A shaft and a hub of equal length on a slender cone, pushed on by
-//    U / C: each face held at u_z = 0 is compatible with the plane-stress
+// 3. A shaft and a hub of equal length on a slender cone, pushed on: each face
+// held at u_z = 0 is compatible with the plane-stress
 //    Lame state (its axial strain is uniform), which is exact for the
 //    cylinder; a taper 1:1000 gives its pressure within 2e-4 (mean and
 //    the middle), a taper 1:50 shows how the cone departs from it.
@@ -42,6 +42,7 @@
 namespace
 {
   using coaxfit_test::close;
+  using coaxfit_test::profile_difference;
   using coaxfit_test::quiet;
   using coaxfit_test::Result;
   using coaxfit_test::run;
@@ -49,22 +50,6 @@ namespace
   const std::string taper
     = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/taper_fit.prm";
 
-  /** The largest difference of two pressure profiles over the largest. */
-  double
-  profile_difference(const Result &a, const Result &b)
-  {
-    if (a.profile.size() != b.profile.size() || a.profile.empty())
-      return INFINITY;
-    double difference = 0., largest = 0.;
-    for (unsigned int i = 0; i < a.profile.size(); ++i)
-      {
-        difference
-          = std::max(difference,
-                     std::abs(a.profile[i].second - b.profile[i].second));
-        largest = std::max(largest, std::abs(b.profile[i].second));
-      }
-    return difference / largest;
-  }
 } // namespace
 
 int
@@ -111,7 +96,7 @@ main()
 
   // 3. Slender tapers of equal length against Lame.
   for (const auto &[ratio, D_small, D_large, a] :
-       {std::make_tuple("1:1000", "47.48", "47.52", "50"),
+       {std::make_tuple("1:1000", "47.48", "47.52", "4"),
         std::make_tuple("1:50", "47.1", "47.9", "2.5")})
     {
       const Result r
@@ -167,6 +152,29 @@ main()
   coaxfit_test::refinement_study("taper", taper, {15., 25., 35.}, std::cout);
   std::cout << std::setprecision(3);
 
+  // A cone at 29.9 degrees drawn with coordinates rounded to 10 digits
+  // (the hub's corners off the shaft's line by 1e-8 mm): the sections
+  // touch within the drawing's tolerance.
+  {
+    const Result steep
+      = run("steep",
+            "--set \"Geometry/Shaft section=0, 26.99897985; 0, 0; 150, 0; "
+            "150, 50; 50, 50; 30, 26.99897985; 0, 26.99897985\" --set "
+            "\"Geometry/Hub section=32, 29.29908187; 48, 47.69989799; 48, 150; "
+            "32, 150; 32, 29.29908187\" --set \"Fit/Push-on distance="
+            "0.04347633\" "
+              + taper);
+    std::cout
+      << "a cone of 29.9 degrees with rounded coordinates: exit "
+      << steep.exit_code << ", von Mises at the hub bore's end zone "
+      << (steep.summary.is_null() ? "missing" :
+          steep.summary["design"]["surface_maxima"]["hub bore"]["von_mises"]
+              .is_number() ?
+                                    "given" :
+                                    "MISSING")
+      << '\n';
+  }
+
   // 6. Bad input.
   std::cout << "bad input (exit code, lines, output written, message):\n";
   const std::string gear
@@ -189,6 +197,12 @@ main()
         "--set \"Geometry/Hub section=5, 45.5; 45, 49.5; 45, 100; 10, 100; "
         "5, 45.5\" "
           + taper},
+       {"a shaft held on a face of 0.1 mm (a point support)",
+        "--set \"Geometry/Shaft section=0, 0; 150, 0; 150, 50, 24.9; 50, 50; "
+        "0, 45; 0, 0\" "
+          + taper},
+       {"a case of an ISO fit", "--set Fit/Case=min " + taper},
+       {"loads of operation", "--set Operation/Speed=20000 " + taper},
        {"a cone at 45 degrees",
         "--set \"Geometry/Shaft section=0, 0; 100, 0; 100, 60; 10, 60; 0, 40; "
         "0, 0\" --set \"Geometry/Hub section=2, 44; 8, 56; 8, 100; 2, 100; "

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 namespace coaxfit
 {
@@ -21,7 +22,14 @@ namespace coaxfit
     , hub(*scene.outer(scene.joint()).discretization)
     , interface(interface)
     , max_steps(max_steps)
-  {}
+  {
+    if (scene.has_transfer())
+      {
+        this->scene       = &scene;
+        transfer_matrix   = scene.joint_transfer().matrix();
+        hub_is_point_side = scene.point_body() == scene.joint().outer;
+      }
+  }
 
 
 
@@ -39,20 +47,26 @@ namespace coaxfit
     const unsigned int              n1 = K1.m(), n = K1.m() + K2.m();
     const AffineConstraints<double> all_tied = tie_constraints(
       std::vector<bool>(shaft.get_interface_dofs().size(), true));
+    // A DoF and the DoFs its tie line names (one on matching sides, the
+    // row of M on non-matching ones).
     const auto images = [&](const unsigned int i) {
-      const auto *line = all_tied.get_constraint_entries(i);
-      return std::array<unsigned int, 2>{
-        {i, line ? static_cast<unsigned int>((*line)[0].first) : i}};
+      std::vector<unsigned int> result{i};
+      if (const auto *line = all_tied.get_constraint_entries(i))
+        for (const auto &entry : *line)
+          result.push_back(entry.first);
+      return result;
     };
     DynamicSparsityPattern dsp(n, n);
-    for (unsigned int row = 0; row < K1.m(); ++row)
-      for (auto e = K1.begin(row); e != K1.end(row); ++e)
-        dsp.add(row, e->column());
-    for (unsigned int row = 0; row < K2.m(); ++row)
-      for (auto e = K2.begin(row); e != K2.end(row); ++e)
-        for (const unsigned int r : images(n1 + row))
-          for (const unsigned int c : images(n1 + e->column()))
-            dsp.add(r, c);
+    for (unsigned int body = 0; body < 2; ++body)
+      {
+        const SparseMatrix<double> &K      = body == 0 ? K1 : K2;
+        const unsigned int          offset = body == 0 ? 0 : n1;
+        for (unsigned int row = 0; row < K.m(); ++row)
+          for (auto e = K.begin(row); e != K.end(row); ++e)
+            for (const unsigned int r : images(offset + row))
+              for (const unsigned int c : images(offset + e->column()))
+                dsp.add(r, c);
+      }
     pattern.copy_from(dsp);
     cholesky.analyze(SparseMatrix<double>(pattern));
   }
@@ -66,13 +80,35 @@ namespace coaxfit
     const auto               &dofs1 = shaft.get_interface_dofs();
     const auto               &dofs2 = hub.get_interface_dofs();
     AffineConstraints<double> constraints;
-    for (unsigned int i = 0; i < dofs1.size(); ++i)
-      if (tied[i])
+    if (scene == nullptr)
+      for (unsigned int i = 0; i < dofs1.size(); ++i)
         {
+          if (!tied[i])
+            continue;
           constraints.add_line(n1 + dofs2[i]);
           constraints.add_entry(n1 + dofs2[i], dofs1[i], 1.);
           constraints.set_inhomogeneity(n1 + dofs2[i],
                                         interface.interference(i));
+        }
+    else
+      // u_hub = M u_shaft + d at the hub's points, or u_shaft = M u_hub - d
+      // at the shaft's.
+      for (unsigned int i = 0; i < transfer_matrix.m(); ++i)
+        {
+          if (!tied[i])
+            continue;
+          const auto line = hub_is_point_side ? n1 + dofs2[i] : dofs1[i];
+          constraints.add_line(line);
+          for (unsigned int j = 0; j < transfer_matrix.n(); ++j)
+            if (transfer_matrix(i, j) != 0.)
+              constraints.add_entry(line,
+                                    hub_is_point_side ? dofs1[j] :
+                                                        n1 + dofs2[j],
+                                    transfer_matrix(i, j));
+          constraints.set_inhomogeneity(line,
+                                        hub_is_point_side ?
+                                          interface.interference(i) :
+                                          -interface.interference(i));
         }
     constraints.close();
     return constraints;
@@ -123,18 +159,56 @@ namespace coaxfit
 
     // Contact force from the shaft's reaction (row of K1 u1); the hub's
     // reaction must be the same force (checked as the traction mismatch).
-    const std::vector<bool> all(dofs1.size(), true);
-    const Vector<double>    no_force(dofs1.size());
-    Vector<double>          hub_force;
-    shaft.interface_values(all, no_force, x1, state.u1, state.force);
-    hub.interface_values(all, no_force, x2, state.u2, hub_force);
-    const double magnitude = std::max(interface.max_pressure(state.force),
-                                      interface.max_pressure(hub_force));
-    state.traction_mismatch
-      = magnitude > 0. ?
-          interface.max_pressure_difference(state.force, hub_force)
-            / magnitude :
-          0.;
+    if (scene == nullptr)
+      {
+        const std::vector<bool> all(dofs1.size(), true);
+        const Vector<double>    no_force(dofs1.size());
+        Vector<double>          hub_force;
+        shaft.interface_values(all, no_force, x1, state.u1, state.force);
+        hub.interface_values(all, no_force, x2, state.u2, hub_force);
+        const double magnitude = std::max(interface.max_pressure(state.force),
+                                          interface.max_pressure(hub_force));
+        state.traction_mismatch
+          = magnitude > 0. ?
+              interface.max_pressure_difference(state.force, hub_force)
+                / magnitude :
+              0.;
+        return;
+      }
+    // Non-matching: the point side's reaction is the contact force; the
+    // other side's own reaction must be M^T of it (checked, in pressures
+    // on that side's points).
+    const BodyDiscretization &P  = hub_is_point_side ? hub : shaft;
+    const BodyDiscretization &A  = hub_is_point_side ? shaft : hub;
+    const Vector<double>     &xP = hub_is_point_side ? x2 : x1;
+    const Vector<double>     &xA = hub_is_point_side ? x1 : x2;
+    Vector<double>            uP, uA_own, forceA;
+    P.interface_values(std::vector<bool>(P.n_interface_points(), true),
+                       Vector<double>(P.n_interface_points()),
+                       xP,
+                       uP,
+                       state.force);
+    A.interface_values(std::vector<bool>(A.n_interface_points(), true),
+                       Vector<double>(A.n_interface_points()),
+                       xA,
+                       uA_own,
+                       forceA);
+    Vector<double> uA(transfer_matrix.m()), expected(transfer_matrix.n());
+    transfer_matrix.vmult(uA, uA_own);
+    transfer_matrix.Tvmult(expected, state.force);
+    state.u1       = hub_is_point_side ? uA : uP;
+    state.u2       = hub_is_point_side ? uP : uA;
+    double largest = 0., difference = 0.;
+    for (unsigned int j = 0; j < expected.size(); ++j)
+      {
+        const double w = A.interface_weights()[j];
+        if (w <= 0.)
+          continue;
+        largest = std::max(largest, std::abs(expected[j]) / w);
+        difference
+          = std::max(difference, std::abs(forceA[j] - expected[j]) / w);
+      }
+    state.traction_mismatch = largest > 0. ? difference / largest : 0.;
   }
 
 

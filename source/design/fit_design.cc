@@ -137,10 +137,16 @@ namespace coaxfit
 
     // The ends of the joint, where the stresses are singular (one for the
     // half model).
-    const double z_corner  = g.joint_end();
-    const double z_other   = g.whole ? g.joint_start() : g.joint_end();
-    hub_bore_stresses      = stresses_along_radius(hub, hub_field, g.R1);
-    shaft_surface_stresses = stresses_along_radius(shaft, shaft_field, g.R1);
+    const double z_corner = g.joint_end();
+    const double z_other  = g.whole ? g.joint_start() : g.joint_end();
+    // On a cone the joint's faces (r varies along them).
+    const bool cone = parameters.sections && parameters.sections->conical();
+    hub_bore_stresses
+      = cone ? stresses_along_boundary(hub, hub_field, BoundaryId::joint) :
+               stresses_along_radius(hub, hub_field, g.R1);
+    shaft_surface_stresses
+      = cone ? stresses_along_boundary(shaft, shaft_field, BoundaryId::joint) :
+               stresses_along_radius(shaft, shaft_field, g.R1);
     surface_maxima.clear();
     for (const auto &[name, states] :
          {std::pair<std::string, const std::vector<StressState> *>{

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <stdexcept>
 
@@ -115,10 +116,18 @@ namespace coaxfit
             const Vector<double>     &solution,
             const Point<2>           &point)
   {
-    const auto found
+    auto found
       = GridTools::find_active_cell_around_point(MappingQ1<2>(),
                                                  body.get_dof_handler(),
                                                  point);
+    // A point on a slanted surface (a cone's joint) may lie outside by
+    // round-off: then the cell within 1e-6 of its size.
+    if (found.first == body.get_dof_handler().end())
+      found = GridTools::find_active_cell_around_point(MappingQ1<2>(),
+                                                       body.get_dof_handler(),
+                                                       point,
+                                                       std::vector<bool>(),
+                                                       1e-6);
     if (found.first == body.get_dof_handler().end())
       throw std::logic_error("stress_at: the point (r = "
                              + std::to_string(point[0])
@@ -137,18 +146,58 @@ namespace coaxfit
   {
     const double tolerance
       = 1e-10 * std::max(body.geometry().r_outer, body.geometry().length);
+    return stresses_on_faces(
+      body,
+      solution,
+      [&](const DoFHandler<2>::active_cell_iterator &cell,
+          const unsigned int                         f) {
+        return std::abs(cell->face(f)->vertex(0)[0] - r) <= tolerance
+               && std::abs(cell->face(f)->vertex(1)[0] - r) <= tolerance;
+      });
+  }
+
+
+
+  std::vector<StressState>
+  stresses_along_boundary(const BodyDiscretization &body,
+                          const Vector<double>     &solution,
+                          const types::boundary_id  id)
+  {
+    return stresses_on_faces(
+      body,
+      solution,
+      [&](const DoFHandler<2>::active_cell_iterator &cell,
+          const unsigned int                         f) {
+        return cell->face(f)->at_boundary()
+               && cell->face(f)->boundary_id() == id;
+      });
+  }
+
+
+
+  std::vector<StressState>
+  stresses_on_faces(
+    const BodyDiscretization                &body,
+    const Vector<double>                    &solution,
+    const std::function<bool(const DoFHandler<2>::active_cell_iterator &,
+                             unsigned int)> &on_surface)
+  {
+    const double tolerance
+      = 1e-10 * std::max(body.geometry().r_outer, body.geometry().length);
     const unsigned int degree = body.get_dof_handler().get_fe().degree;
     // Sum and count of the values at each z (shared vertices: two cells).
     std::map<double, std::pair<StressState, unsigned int>> by_z;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       for (const unsigned int f : GeometryInfo<2>::face_indices())
         {
-          // Faces 0 and 1 are r = const (x = 0 and x = 1 on the unit cell).
-          if (f > 1 || std::abs(cell->face(f)->center()[0] - r) > tolerance)
+          if (!on_surface(cell, f))
             continue;
+          // The face's points on the unit cell: x = f (faces 0, 1) or
+          // y = f - 2 (faces 2, 3).
           std::vector<Point<2>> unit_points;
           for (unsigned int i = 0; i <= degree; ++i)
-            unit_points.emplace_back(f, double(i) / degree);
+            unit_points.push_back(f < 2 ? Point<2>(f, double(i) / degree) :
+                                          Point<2>(double(i) / degree, f - 2));
           for (const StressState &s :
                stresses_in_cell(body, solution, cell, unit_points))
             {

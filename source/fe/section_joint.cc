@@ -109,9 +109,15 @@ namespace coaxfit
             continue;
           const Tensor<1, 2> de = e.end - e.start, df = f.end - f.start;
           const double       le = de.norm(), lf = df.norm();
+          // Edges on one line within the drawing tolerance (a cone drawn
+          // with rounded coordinates) are collinear, not crossing.
+          const Tensor<1, 2> along = de / le;
+          const bool         on_line
+            = std::abs(cross(along, f.start - e.start)) <= tolerance
+              && std::abs(cross(along, f.end - e.start)) <= tolerance;
           // Two edges that cross properly: the sections overlap.
           const double denominator = cross(de, df);
-          if (std::abs(denominator) > 1e-12 * le * lf)
+          if (!on_line && std::abs(denominator) > 1e-12 * le * lf)
             {
               const double t = cross(f.start - e.start, df) / denominator;
               const double u = cross(f.start - e.start, de) / denominator;

@@ -29,16 +29,29 @@ namespace coaxfit
     }
 
     /**
-     * @p outline with every corner within @p tol of the cylinder of radius
-     * @p r moved onto it.
+     * @p outline with every corner within @p tol of the line through @p a
+     * and @p b (a cylinder or a cone in (r, z)) moved radially onto it.
      */
     SectionOutline
-    snapped(const SectionOutline &outline, const double r, const double tol)
+    snapped(const SectionOutline &outline,
+            const Point<2>       &a,
+            const Point<2>       &b,
+            const double          tol)
     {
+      const Tensor<1, 2>         along   = (b - a) / (b - a).norm();
       std::vector<OutlineCorner> corners = outline.corners();
       for (OutlineCorner &c : corners)
-        if (std::abs(0.5 * c.diameter - r) <= tol)
+        {
+          const Point<2> p(0.5 * c.diameter, c.z);
+          if (std::abs(along[0] * (p - a)[1] - along[1] * (p - a)[0]) > tol)
+            continue;
+          // The line's r at this z (a cylinder: its radius).
+          const double r
+            = std::abs(b[1] - a[1]) > 0. ?
+                a[0] + (c.z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) :
+                a[0];
           c.diameter = 2. * r;
+        }
       corners.push_back(corners.front()); // closed explicitly
       return SectionOutline(corners, outline.entry());
     }
@@ -99,15 +112,17 @@ namespace coaxfit
     std::vector<JointPiece> pieces
       = merged(find_joint(*shaft_drawn, *hub_drawn), tol);
     // Sections that meet within the drawing tolerance: corners on the
-    // joint's cylinder moved onto it exactly, so that both meshes have it.
-    if (pieces.size() == 1
-        && std::abs(pieces[0].start[0] - pieces[0].end[0]) <= tol)
+    // joint's cylinder or cone moved onto it exactly, so that both meshes
+    // have it.
+    if (pieces.size() == 1)
       {
-        const double r = pieces[0].start[0];
+        Point<2> a = pieces[0].start, b = pieces[0].end;
+        if (std::abs(a[0] - b[0]) <= tol)
+          b[0] = a[0];
         shaft_drawn
-          = std::make_unique<SectionOutline>(snapped(*shaft_drawn, r, tol));
+          = std::make_unique<SectionOutline>(snapped(*shaft_drawn, a, b, tol));
         hub_drawn
-          = std::make_unique<SectionOutline>(snapped(*hub_drawn, r, tol));
+          = std::make_unique<SectionOutline>(snapped(*hub_drawn, a, b, tol));
         pieces = merged(find_joint(*shaft_drawn, *hub_drawn), tol);
       }
     if (pieces.size() != 1)
@@ -369,7 +384,13 @@ namespace coaxfit
     double       z_face    = outline.corners().front().z;
     for (const OutlineCorner &c : outline.corners())
       z_face = direction > 0. ? std::max(z_face, c.z) : std::min(z_face, c.z);
-    bool found = false;
+    bool   found = false;
+    double held = 0., r_min = outline.corners().front().diameter, r_max = 0.;
+    for (const OutlineCorner &c : outline.corners())
+      {
+        r_min = std::min(r_min, 0.5 * c.diameter);
+        r_max = std::max(r_max, 0.5 * c.diameter);
+      }
     for (const OutlineEdge &edge : outline.edges())
       if (!edge.is_arc() && std::abs(edge.start[1] - z_face) <= tol
           && std::abs(edge.end[1] - z_face) <= tol
@@ -379,7 +400,18 @@ namespace coaxfit
           face.refine_ends = false;
           result.segments.push_back(face);
           found = true;
+          held += edge.start.distance(edge.end);
         }
+    // A face much smaller than the section is a point support: its give
+    // grows without bound under refinement.
+    if (found && held < 0.25 * (r_max - r_min))
+      throw InputError(
+        "parameter " + outline.entry() + ": a taper fit holds the "
+        + std::string(shaft ? "shaft" : "hub") + " at its flat face at z = "
+        + number(z_face + z_m, 6) + ", which spans " + number(held, 6)
+        + " mm of the section's " + number(r_max - r_min, 6)
+        + " mm radial extent; allowed: a face of at least a quarter of it "
+          "(a smaller one acts as a point support)");
     if (!found)
       throw InputError(
         "parameter " + outline.entry() + ": a taper fit holds the "

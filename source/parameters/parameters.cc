@@ -1387,7 +1387,8 @@ namespace coaxfit
     std::string prm_lines = prm_text.str();
     // With an ISO fit the interference is the fit's: the entry would only
     // be reported as not used when the file is run again.
-    if (!parameters.fit.iso_fit.empty())
+    if (!parameters.fit.iso_fit.empty()
+        || (parameters.sections && parameters.sections->conical()))
       prm_lines = replace_prm_line(prm_lines, "Diametral interference", "");
     // With sections the plain geometry entries are derived, and the file
     // would be refused if it gave them.

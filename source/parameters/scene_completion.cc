@@ -81,7 +81,11 @@ namespace coaxfit
               && (U_w == 0. || std::abs(U_w) >= 1e-9 * D))
             continue;
           const std::string what
-            = p.fit.iso_fit.empty() ?
+            = p.sections && p.sections->conical() ?
+                "parameter Fit/Push-on distance = "
+                  + number(p.fit.push_on_distance)
+                  + " mm (U = a C = " + number(U) + " mm)" :
+              p.fit.iso_fit.empty() ?
                 "parameter Fit/Diametral interference = " + number(U) + " mm" :
                 "parameter Fit/ISO fit = " + p.fit_limits.iso_fit + " (case "
                   + to_string(c) + ": U = " + number(U) + " mm)";
@@ -182,10 +186,6 @@ namespace coaxfit
                 + number(l_F) + " mm)");
       if (!p.mesh.shared_joint_nodes)
         {
-          if (p.solver.method != SolverMethod::staggered)
-            throw InputError("parameter Solver/Method = monolithic is not "
-                             "allowed with Mesh/Joint nodes = own: the "
-                             "monolithic reference needs shared joint nodes");
           if (p.solver.linear_solver == LinearSolverType::amg
               || p.coupling.interface_operator == InterfaceOperatorType::full)
             throw InputError("parameters Solver/Linear solver = amg and "
@@ -239,7 +239,7 @@ namespace coaxfit
     complete_taper(Parameters &p, const bool interference_given)
     {
       const std::string why
-        = " with sections that meet on a cone (a taper fit "
+        = " with sections that meet on a cone (a taper fit, C = "
           + number(p.sections->taper(), 6)
           + "): Fit/Push-on distance sets the interference (U = a C)";
       if (interference_given)
@@ -252,15 +252,37 @@ namespace coaxfit
         throw InputError("parameter Design/Mode = select is not allowed" + why
                          + "; give it and Design/Mode = check (choosing a "
                            "push-on distance is not modelled yet)");
-      const double D = 2. * p.sections->joint_radius();
-      const double C = p.sections->taper();
-      require(p.fit.push_on_distance > 0.
-                && p.fit.push_on_distance * C <= 0.1 * D,
+      if (p.fit.fit_case != FitCase::mean)
+        throw InputError("parameter Fit/Case = " + to_string(p.fit.fit_case)
+                         + " is not allowed" + why
+                         + " (one interference: allowed is mean)");
+      const OperationParameters &o = p.operation;
+      if (o.speed != 0. || o.shaft_temperature() != o.assembly_temperature
+          || o.hub_temperature() != o.assembly_temperature)
+        throw InputError(
+          "parameters Operation/Speed, Shaft temperature and Hub "
+          "temperature give loads of operation"
+          + why
+          + "; a taper fit is modelled as pushed on and held at its faces, "
+            "which would also hold it against the axial strains of "
+            "operation: allowed is the assembled state only (Speed 0, the "
+            "temperatures those of assembly)");
+      const double D     = 2. * p.sections->joint_radius();
+      const double C     = p.sections->taper();
+      const double l     = p.sections->joint_length();
+      const double a_max = std::min(0.1 * D / C, 0.1 * l);
+      // The sections are drawn where they touch and the model stays there:
+      // the push must be small against the joint (and U in the linear
+      // range).
+      require(p.fit.push_on_distance > 0. && p.fit.push_on_distance <= a_max,
               "Fit/Push-on distance",
               p.fit.push_on_distance,
-              "a > 0 with a C <= 0.1 D_F for the taper C = " + number(C, 6)
-                + " on D_F = " + number(D) + " mm (a <= " + number(0.1 * D / C)
-                + " mm)");
+              "0 < a <= " + number(a_max)
+                + " mm (a C <= 0.1 D_F for the taper C = " + number(C, 6)
+                + " on D_F = " + number(D)
+                + " mm, and a <= l_F / 10, the model staying where the "
+                  "sections touch, l_F = "
+                + number(l) + " mm)");
       p.fit.diametral_interference = p.fit.push_on_distance * C;
     }
   } // namespace

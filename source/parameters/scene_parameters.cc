@@ -78,8 +78,9 @@ namespace coaxfit
         "Both sections or neither: with them, the plain entries above are "
         "left out (the sections decide them: D_F and l_F from the joint, "
         "D_aA the hub's outer diameter averaged over the joint) and "
-        "Mesh/Cell size decides the meshes. This version models scenes "
-        "symmetric about a plane z = const with one cylindrical joint "
+        "Mesh/Cell size decides the meshes. The joint is one cylinder or "
+        "one cone (a taper fit: Fit/Push-on distance); a scene symmetric "
+        "about a plane z = const is modelled as its half, any other whole "
         "(doc/real_parts.md). Empty: the plain cylinders.";
     prm.add_parameter("Shaft section",
                       shaft_section,

@@ -2,6 +2,7 @@
 #define coaxfit_monolithic_solver_h
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <coaxfit/coupling/contact_interface.h>
@@ -22,6 +23,12 @@ namespace coaxfit
    * built once with every point tied (a superset of the pattern of any active
    * set) and analyzed once; each active set then costs one numeric
    * factorization.
+   *
+   * Joints whose nodes do not match (`Mesh/Joint nodes = own`): the
+   * interface points are those of one body P (Scene::point_body()), the
+   * other body A reaches them through the mortar projection M; the tie is
+   * then u_P = M u_A +- d at each point of P in contact, a line with the
+   * entries of M on A's joint DoFs, and A's contact forces are M^T F.
    *
    * Unilateral contact is handled by a primal-dual active set loop (as in
    * deal.II's step-41): after each solve, a tied point whose contact force
@@ -72,6 +79,10 @@ namespace coaxfit
 
     const BodyDiscretization &shaft;
     const BodyDiscretization &hub;
+    /** Non-matching joint: the transfer from A to P, M (n_P x n_A). */
+    const Scene       *scene = nullptr;
+    FullMatrix<double> transfer_matrix;
+    bool               hub_is_point_side = true;
     /** The bodies' stiffness in the joint's frame (a cone). */
     SparseMatrix<double>    shaft_rotated, hub_rotated;
     Vector<double>          shaft_field, hub_field;

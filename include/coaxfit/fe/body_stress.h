@@ -7,6 +7,7 @@
 #include <coaxfit/fe/axisymmetric.h>
 #include <coaxfit/fe/body_discretization.h>
 
+#include <functional>
 #include <vector>
 
 namespace coaxfit
@@ -59,6 +60,27 @@ namespace coaxfit
   stresses_along_radius(const BodyDiscretization &body,
                         const Vector<double>     &solution,
                         double                    r);
+
+  /**
+   * The same on the boundary faces of @p body with the id @p id (a cone's
+   * joint, BoundaryId::joint).
+   */
+  std::vector<StressState>
+  stresses_along_boundary(const BodyDiscretization &body,
+                          const Vector<double>     &solution,
+                          types::boundary_id        id);
+
+  /**
+   * The stresses of @p solution at the support points of the faces of
+   * @p body for which @p on_surface (cell, face index) is true, ordered by
+   * z; the values of the cells at a shared point averaged.
+   */
+  std::vector<StressState>
+  stresses_on_faces(
+    const BodyDiscretization                &body,
+    const Vector<double>                    &solution,
+    const std::function<bool(const DoFHandler<2>::active_cell_iterator &,
+                             unsigned int)> &on_surface);
 } // namespace coaxfit
 
 #endif

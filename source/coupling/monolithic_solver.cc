@@ -193,11 +193,11 @@ namespace coaxfit
                        xA,
                        uA_own,
                        forceA);
-    Vector<double> uA(transfer_matrix.m()), expected(transfer_matrix.n());
-    transfer_matrix.vmult(uA, uA_own);
-    transfer_matrix.Tvmult(expected, state.force);
-    state.u1       = hub_is_point_side ? uA : uP;
-    state.u2       = hub_is_point_side ? uP : uA;
+    const unsigned int   a        = scene->mortar_body();
+    const Vector<double> uA       = scene->joint_values(a, uA_own);
+    const Vector<double> expected = scene->body_forces(a, state.force);
+    state.u1                      = hub_is_point_side ? uA : uP;
+    state.u2                      = hub_is_point_side ? uP : uA;
     double largest = 0., difference = 0.;
     for (unsigned int j = 0; j < expected.size(); ++j)
       {

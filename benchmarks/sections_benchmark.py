@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Time against error for the section examples (gear_on_shaft, flush_pulley,
-taper_fit).
+taper_fit; rounded_gear, a gmsh file, against its outline).
 
 Each example runs at Mesh/Global refinements 0..2 at its shipped cell size
 (refinement 1) and at cell sizes 0.5 and 0.125 mm (refinement 1), and with meshes of their own (Mesh/Joint nodes = own, the hub
@@ -41,6 +41,19 @@ SETTINGS = [("shipped", []),
             ("cell 0.125 mm", ["Mesh/Cell size=0.125"]),
             ("own nodes, hub 0.4 mm", ["Mesh/Joint nodes=own", "Mesh/Hub cell size=0.4"]),
             ("own nodes, hub 0.15 mm", ["Mesh/Joint nodes=own", "Mesh/Hub cell size=0.15"])]
+
+
+# A section from a gmsh file against the same section written as an
+# outline (half model, shared joint nodes) at the same refinement: the
+# gmsh route's own error, beside the outline route's error against
+# CalculiX above (no independent solution of the filleted gear).
+FILE_CASES = {
+    "rounded_gear": "-25, 50; 25, 50; 25, 80; 6, 80, 4; 6, 150, 4; 15, 150; "
+                    "15, 180; -15, 180; -15, 150; -6, 150, 4; -6, 80, 4; "
+                    "-25, 80; -25, 50",
+}
+FILE_SETTINGS = SETTINGS[:3]
+FILE_POINTS = [0, 5, 10, 15, 20]
 
 
 def run(case, settings):
@@ -85,6 +98,18 @@ for case, (mean_ref, points) in REFERENCE.items():
                      "%.1e" % mean_error, "%.1e" % point_error])
         print(rows[-1], flush=True)
 
+for case, outline in FILE_CASES.items():
+    for label, settings in FILE_SETTINGS:
+        seconds, s, z, p = run(case, settings)
+        _, o, zo, po = run(case, settings + ["Geometry/Hub section=" + outline])
+        dofs = sum(s["mesh"]["dofs"].values())
+        mean_error = abs(s["pressure"]["mean"] / o["pressure"]["mean"] - 1)
+        point_error = max(abs(at(z, p, x) / at(zo, po, x) - 1) for x in FILE_POINTS)
+        rows.append([case + " (vs outline)", label, dofs, "%.3f" % seconds,
+                     "%.4f" % s["pressure"]["mean"], "%.1e" % mean_error,
+                     "%.1e" % point_error])
+        print(rows[-1], flush=True)
+
 header = ["case", "mesh", "DoFs", "wall_s", "mean_MPa", "mean_error", "max_point_error"]
 write_csv(os.path.join(ROOT, "benchmarks", "sections_benchmark.csv"), header, rows)
 print()
@@ -94,7 +119,7 @@ try:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for case in REFERENCE:
+    for case in list(REFERENCE) + [c + " (vs outline)" for c in FILE_CASES]:
         r = [row for row in rows if row[0] == case]
         ax.loglog([float(x[3]) for x in r], [max(float(x[6]), 1e-7) for x in r], "o",
                   label=case)

@@ -18,6 +18,29 @@
 
 namespace coaxfit_test
 {
+  /**
+   * The Fit and Material subsections of a test scene: U = 0.05 mm, a steel
+   * shaft (E 210000 MPa, nu 0.3) and a hub of @p E_hub (MPa) and @p nu_hub.
+   */
+  inline std::string
+  fit_and_materials(const std::string &E_hub, const std::string &nu_hub)
+  {
+    return "subsection Fit\n"
+           "  set Diametral interference = 0.05\n"
+           "end\n"
+           "subsection Material\n"
+           "  subsection Shaft\n"
+           "    set E = 210000\n"
+           "    set nu = 0.3\n"
+           "  end\n"
+           "  subsection Hub\n"
+           "    set E = "
+           + E_hub + "\n    set nu = " + nu_hub
+           + "\n"
+             "  end\n"
+             "end\n";
+  }
+
   /** Options that keep a test run to summary.json and the CSV files. */
   inline const std::string quiet
     = " --set \"Output/Write vtu=false\" --set \"Output/Write plots=false\" ";

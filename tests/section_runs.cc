@@ -50,22 +50,9 @@ namespace
   const std::string gear
     = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/gear_on_shaft.prm";
 
-  const std::string materials = "subsection Fit\n"
-                                "  set Diametral interference = 0.05\n"
-                                "end\n"
-                                "subsection Material\n"
-                                "  subsection Shaft\n"
-                                "    set E = 210000\n"
-                                "    set nu = 0.3\n"
-                                "  end\n"
-                                "  subsection Hub\n"
-                                "    set E = 210000\n"
-                                "    set nu = 0.3\n"
-                                "  end\n"
-                                "end\n"
-                                "subsection Mesh\n"
-                                "  set Global refinements = 1\n"
-                                "end\n";
+  const std::string materials
+    = coaxfit_test::fit_and_materials("210000", "0.3")
+      + "subsection Mesh\n  set Global refinements = 1\nend\n";
 
   using coaxfit_test::quiet;
 
@@ -353,8 +340,8 @@ main()
        + gear},
     {"a cell size beyond a quarter of the joint length",
      "--set \"Mesh/Cell size=20\" " + gear},
-    {"a pressure on a section's face",
-     "--set \"Operation/Hub outer pressure=10\" " + gear}};
+    {"a bore pressure on a solid shaft's section",
+     "--set \"Operation/Shaft bore pressure=10\" " + gear}};
   for (const auto &[what, arguments] : bad)
     {
       std::filesystem::remove_all("bad");

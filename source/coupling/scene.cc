@@ -1,3 +1,4 @@
+#include <coaxfit/base/input_error.h>
 #include <coaxfit/coupling/contact_interface.h>
 #include <coaxfit/coupling/interface_side.h>
 #include <coaxfit/coupling/scene.h>
@@ -21,6 +22,34 @@ namespace coaxfit
       if (name != "Shaft" && name != "Hub")
         throw std::logic_error("no body named '" + name + "'");
       return name == "Shaft";
+    }
+
+    /**
+     * Whether between every two neighbouring points of @p b along the
+     * joint (ends included) lies a node of @p a: the mortar side @p a is
+     * then at least as fine as @p b everywhere.
+     */
+    bool
+    nodes_interlace(const InterfaceSide &a, const InterfaceSide &b)
+    {
+      const std::vector<Point<2>> &pa = a.points(), &pb = b.points();
+      const Tensor<1, 2> along     = (pa.back() - pa.front()) / a.length();
+      const auto         positions = [&](const std::vector<Point<2>> &points) {
+        std::vector<double> t;
+        for (const Point<2> &p : points)
+          t.push_back((p - pa.front()) * along);
+        std::sort(t.begin(), t.end());
+        return t;
+      };
+      const std::vector<double> ta = positions(pa), tb = positions(pb);
+      const double              tol = 1e-9 * a.length();
+      for (unsigned int i = 0; i + 1 < tb.size(); ++i)
+        {
+          const auto next = std::lower_bound(ta.begin(), ta.end(), tb[i] - tol);
+          if (next == ta.end() || *next > tb[i + 1] + tol)
+            return false;
+        }
+      return true;
     }
   } // namespace
 
@@ -107,6 +136,13 @@ namespace coaxfit
       load.inner_pressure = o.shaft_bore_pressure;
     else
       load.outer_pressure = o.hub_outer_pressure;
+    if (parameters.sections)
+      {
+        const auto names = parameters.sections->face_names(shaft);
+        for (const auto &[name, p] : o.face_pressures())
+          if (names.count(name) != 0)
+            load.face_pressures[names.at(name)] = p;
+      }
     return load;
   }
 
@@ -248,7 +284,27 @@ namespace coaxfit
     const InterfaceSide sides[2]
       = {InterfaceSide(a.get_dof_handler(), BoundaryId::joint),
          InterfaceSide(b.get_dof_handler(), BoundaryId::joint)};
-    mortar = sides[0].n_nodes() >= sides[1].n_nodes() ? 0 : 1;
+    // The side with more joint nodes is A, unless it is coarser than the
+    // other somewhere (graded differently): then B's points there would
+    // see fewer of A's nodes than they are, and A's condensed compliance
+    // M C_A M^T would be singular.
+    const unsigned int more = sides[0].n_nodes() >= sides[1].n_nodes() ? 0 : 1;
+    if (nodes_interlace(sides[more], sides[1 - more]))
+      mortar = more;
+    else if (nodes_interlace(sides[1 - more], sides[more]))
+      mortar = 1 - more;
+    else
+      throw InputError(
+        "parameters Mesh/Cell size, Mesh/Hub cell size and Mesh/Grading "
+        "ratio (or a gmsh file's sizes): along the joint each body's mesh is "
+        "finer than the other's somewhere ("
+        + bodies[0].name() + " " + std::to_string(sides[0].n_nodes())
+        + " nodes, " + bodies[1].name() + " "
+        + std::to_string(sides[1].n_nodes())
+        + "), so neither side's nodes can carry the other's (the coupling "
+          "would be singular); allowed: one body at least as fine as the "
+          "other along the whole joint, e.g. a smaller cell size or the same "
+          "grading for the outline");
     auto m = std::make_shared<MortarTransfer>(sides[mortar], sides[1 - mortar]);
     if (!m->uncovered_nodes().empty())
       throw std::logic_error("the joint of " + bodies[1 - mortar].name()

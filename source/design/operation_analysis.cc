@@ -93,6 +93,8 @@ namespace coaxfit
       << " MPa on the hub's outer surface";
     if (parameters.geometry.R0 > 0.)
       c << " and " << o.shaft_bore_pressure << " MPa in the shaft's bore";
+    for (const auto &[name, p] : o.face_pressures())
+      c << ", " << p << " MPa on the face '" << name << "'";
     conditions = c.str();
 
     compute_loosening_speed(parameters, fit);
@@ -498,6 +500,7 @@ namespace coaxfit
     p.operation.speed                  = 0.;
     p.operation.shaft_bore_pressure    = 0.;
     p.operation.hub_outer_pressure     = 0.;
+    p.operation.face_pressures_text    = "";
     p.design.corner_trend              = false;
     return p;
   }

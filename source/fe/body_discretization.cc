@@ -273,7 +273,8 @@ namespace coaxfit
         return load.inner_pressure;
       if (face->boundary_id() == BoundaryId::outer)
         return load.outer_pressure;
-      return 0.;
+      const auto named = load.face_pressures.find(face->boundary_id());
+      return named == load.face_pressures.end() ? 0. : named->second;
     };
 
     Vector<double> rhs(n_dofs());

@@ -4,12 +4,15 @@
 #include <coaxfit/fe/mesh.h>
 #include <coaxfit/fe/section_file.h>
 #include <coaxfit/fe/section_mesh.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <gmsh.h>
+#include <map>
+#include <set>
 
 namespace coaxfit
 {
@@ -171,5 +174,88 @@ namespace coaxfit
     });
     triangulation.refine_global(global_refinements);
     return names;
+  }
+
+
+
+  bool
+  is_section_file_name(const std::string &text)
+  {
+    const auto first = text.find_first_not_of(" \t");
+    const auto last  = text.find_last_not_of(" \t");
+    if (first == std::string::npos || text.find(';') != std::string::npos)
+      return false;
+    std::string word = text.substr(first, last - first + 1);
+    if (word.size() < 5)
+      return false;
+    std::transform(word.begin(),
+                   word.end(),
+                   word.begin(),
+                   [](const unsigned char c) { return std::tolower(c); });
+    const std::string extension = word.substr(word.size() - 4);
+    return extension == ".geo" || extension == ".msh";
+  }
+
+
+
+  SectionOutline
+  outline_of_mesh(const Triangulation<2> &triangulation,
+                  const std::string      &entry,
+                  const std::string      &filename)
+  {
+    const std::string context = "parameter " + entry + " = '" + filename + "'";
+    // The boundary faces as vertex pairs, each vertex's two neighbours.
+    std::map<unsigned int, std::vector<unsigned int>> neighbours;
+    std::size_t                                       n_faces = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            neighbours[face->vertex_index(0)].push_back(face->vertex_index(1));
+            neighbours[face->vertex_index(1)].push_back(face->vertex_index(0));
+            ++n_faces;
+          }
+    const std::vector<Point<2>> &vertices = triangulation.get_vertices();
+    for (const auto &[v, list] : neighbours)
+      if (list.size() != 2)
+        throw InputError(context + ": the section's boundary meets itself at "
+                         + "(r = " + number(vertices[v][0], 6)
+                         + ", z = " + number(vertices[v][1], 6)
+                         + "); a section must be one region bounded by one "
+                           "closed curve");
+    // Walk the loop from its first vertex.
+    std::vector<Point<2>> loop;
+    const unsigned int    start    = neighbours.begin()->first;
+    unsigned int          previous = start, current = neighbours[start][0];
+    loop.push_back(vertices[start]);
+    while (current != start && loop.size() <= n_faces)
+      {
+        loop.push_back(vertices[current]);
+        const std::vector<unsigned int> &next = neighbours[current];
+        const unsigned int following = next[0] == previous ? next[1] : next[0];
+        previous                     = current;
+        current                      = following;
+      }
+    if (loop.size() != n_faces)
+      throw InputError(context + ": the section's boundary is "
+                       + "not one closed curve (a hole, or pieces that do "
+                         "not touch); a section must be one region without "
+                         "holes");
+    // Neighbours on one straight line merged (relative to the edges).
+    std::vector<Point<2>> corners;
+    const std::size_t     n = loop.size();
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const Point<2> &a = loop[(i + n - 1) % n], &b = loop[i],
+                       &c    = loop[(i + 1) % n];
+        const Tensor<1, 2> u = b - a, w = c - b;
+        if (std::abs(cross(u, w)) > 1e-10 * u.norm() * w.norm() || u * w < 0.)
+          corners.push_back(b);
+      }
+    std::vector<OutlineCorner> points;
+    for (const Point<2> &p : corners)
+      points.push_back(OutlineCorner{p[1], 2. * p[0], 0.});
+    points.push_back(points.front()); // closed explicitly
+    return SectionOutline(points, entry);
   }
 } // namespace coaxfit

@@ -1,5 +1,6 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/mesh.h>
+#include <coaxfit/fe/section_file.h>
 #include <coaxfit/fe/section_joint.h>
 #include <coaxfit/fe/section_scene.h>
 #include <coaxfit/fe/section_symmetry.h>
@@ -100,13 +101,41 @@ namespace coaxfit
 
 
 
+  std::shared_ptr<SectionScene::FileSection>
+  SectionScene::read_file(const std::string               &path,
+                          const std::string               &entry,
+                          std::unique_ptr<SectionOutline> &outline)
+  {
+    auto file   = std::make_shared<FileSection>();
+    file->path  = path;
+    file->names = read_section_file(file->mesh, path, entry);
+    outline     = std::make_unique<SectionOutline>(
+      outline_of_mesh(file->mesh, entry, path));
+    return file;
+  }
+
+
+
   SectionScene::SectionScene(const std::string &shaft_text,
                              const std::string &hub_text)
-    : shaft_drawn(std::make_unique<SectionOutline>(
-      SectionOutline::parse(shaft_text, shaft_entry)))
-    , hub_drawn(std::make_unique<SectionOutline>(
-        SectionOutline::parse(hub_text, hub_entry)))
   {
+    for (const bool shaft : {true, false})
+      {
+        const std::string &text  = shaft ? shaft_text : hub_text;
+        const std::string &entry = shaft ? shaft_entry : hub_entry;
+        std::unique_ptr<SectionOutline> &outline
+          = shaft ? shaft_drawn : hub_drawn;
+        if (is_section_file_name(text))
+          {
+            const auto first = text.find_first_not_of(" \t");
+            const auto last  = text.find_last_not_of(" \t");
+            (shaft ? shaft_file : hub_file)
+              = read_file(text.substr(first, last - first + 1), entry, outline);
+          }
+        else
+          outline = std::make_unique<SectionOutline>(
+            SectionOutline::parse(text, entry));
+      }
     const double tol
       = 1e-6 * std::max(shaft_drawn->extent(), hub_drawn->extent());
     std::vector<JointPiece> pieces
@@ -181,11 +210,12 @@ namespace coaxfit
       shaft_bore = std::min(shaft_bore, c.diameter);
 
     z_start = z_lo;
-    // Symmetric about the joint's middle: the half; anything else whole.
+    // Symmetric about the joint's middle: the half; anything else whole
+    // (and a gmsh file's mesh is not cut).
     const std::optional<double> plane
       = mirror_plane({shaft_drawn.get(), hub_drawn.get()});
     std::optional<SectionOutline> shaft_part, hub_part;
-    if (plane && std::abs(*plane - 0.5 * (z_lo + z_hi)) <= tol)
+    if (plane && !has_file() && std::abs(*plane - 0.5 * (z_lo + z_hi)) <= tol)
       {
         shaft_part = half_outline(*shaft_drawn, *plane);
         hub_part   = half_outline(*hub_drawn, *plane);
@@ -204,6 +234,122 @@ namespace coaxfit
         shaft_half = std::make_unique<SectionOutline>(*shaft_drawn);
         hub_half   = std::make_unique<SectionOutline>(*hub_drawn);
       }
+    for (const bool shaft : {true, false})
+      if (from_file(shaft))
+        tag_file_mesh(*(shaft ? shaft_file : hub_file), shaft, tol);
+  }
+
+
+
+  void
+  SectionScene::tag_surfaces(Triangulation<2> &mesh, const bool shaft) const
+  {
+    const SectionOutline &outline = drawn(shaft);
+    double                r       = shaft ? 0.5 * shaft_bore : 0.;
+    if (!shaft)
+      for (const OutlineCorner &c : outline.corners())
+        r = std::max(r, 0.5 * c.diameter);
+    if (r <= 0.)
+      return; // a solid shaft has no bore
+    const double tol = 1e-9 * outline.extent();
+    for (const auto &cell : mesh.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == SectionId::free
+            && std::abs(face->vertex(0)[0] - r) <= tol
+            && std::abs(face->vertex(1)[0] - r) <= tol)
+          face->set_boundary_id(shaft ? BoundaryId::bore : BoundaryId::outer);
+  }
+
+
+
+  std::map<std::string, types::boundary_id>
+  SectionScene::face_names(const bool shaft) const
+  {
+    return from_file(shaft) ? (shaft ? shaft_file : hub_file)->names :
+                              std::map<std::string, types::boundary_id>();
+  }
+
+
+
+  void
+  SectionScene::tag_file_mesh(FileSection &file,
+                              const bool   shaft,
+                              const double tol) const
+  {
+    const SectionOutline &outline = drawn(shaft);
+    const std::string     context
+      = "parameter " + outline.entry() + " = '" + file.path + "'";
+    const Point<2> a(r_start, z_start), b(r_end, z_start + 2. * half_length);
+    const Tensor<1, 2> along    = (b - a) / (b - a).norm();
+    const auto         on_joint = [&](const Point<2> &p) {
+      const Tensor<1, 2> d = p - a;
+      return std::abs(along[0] * d[1] - along[1] * d[0]) <= tol
+             && d * along >= -tol && d * along <= (b - a).norm() + tol;
+    };
+    const auto where = [](const Point<2> &p) {
+      return "(r = " + number(p[0], 6) + ", z = " + number(p[1], 6) + ")";
+    };
+    const std::string joint_text
+      = "the joint the sections make, from " + where(a) + " to " + where(b);
+    // On a cone the held face, as the outline gives it (checked there).
+    std::vector<TaggedSegment> held;
+    if (cone)
+      for (const TaggedSegment &segment :
+           boundary(outline, joint_segment(), shaft).segments)
+        if (segment.boundary_id == BoundaryId::held)
+          held.push_back(segment);
+    const auto on_segment = [&](const TaggedSegment &s, const Point<2> &p) {
+      const Tensor<1, 2> t = (s.end - s.start) / (s.end - s.start).norm();
+      const Tensor<1, 2> d = p - s.start;
+      return std::abs(t[0] * d[1] - t[1] * d[0]) <= tol && d * t >= -tol
+             && d * t <= (s.end - s.start).norm() + tol;
+    };
+
+    double covered = 0.;
+    for (const auto &cell : file.mesh.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const Point<2> p = face->vertex(0), q = face->vertex(1);
+            if (face->boundary_id() == BoundaryId::joint)
+              {
+                if (!on_joint(p) || !on_joint(q))
+                  throw InputError(
+                    context + ": its physical curve 'joint' has a face from "
+                    + where(p) + " to " + where(q) + " off " + joint_text
+                    + "; 'joint' must be the surface that meets the other "
+                      "body and no more");
+                covered += p.distance(q);
+                continue;
+              }
+            if (on_joint(p) && on_joint(q))
+              throw InputError(context + ": a face from " + where(p) + " to "
+                               + where(q) + " lies on " + joint_text
+                               + " but not in the physical curve 'joint'");
+            if (p[0] <= tol && q[0] <= tol)
+              face->set_boundary_id(BoundaryId::axis);
+            for (const TaggedSegment &s : held)
+              if (on_segment(s, p) && on_segment(s, q))
+                face->set_boundary_id(BoundaryId::held);
+            // A circle arc that begins at an end of the joint: contact
+            // would spread onto it.
+            if (face->manifold_id() != numbers::flat_manifold_id)
+              for (const Point<2> &end : {a, b})
+                if (std::min(p.distance(end), q.distance(end)) <= tol)
+                  throw InputError(
+                    context + ": a circle arc begins at the end of the "
+                    + "joint " + where(end)
+                    + ": contact on a rounded edge is not modelled yet (the "
+                      "joint would end at its tangent point as at a sharp "
+                      "edge, with a wrong pressure peak); draw the edge "
+                      "sharp or chamfered");
+          }
+    tag_surfaces(file.mesh, shaft);
+    if (std::abs(covered - (b - a).norm()) > 1e3 * tol)
+      throw InputError(context + ": its physical curve 'joint' covers "
+                       + number(covered, 6) + " mm of " + joint_text + " ("
+                       + number((b - a).norm(), 6)
+                       + " mm); it must cover all of it");
   }
 
 
@@ -291,6 +437,10 @@ namespace coaxfit
                             Triangulation<2>          &hub,
                             const SectionMeshSettings &settings) const
   {
+    if (has_file())
+      throw InputError("parameter Mesh/Joint nodes = shared is not possible "
+                       "with a gmsh file as a section (its mesh keeps its own "
+                       "joint nodes); allowed: own");
     const Point<2> end  = joint_segment().end;
     const double  h_max = settings.max_cell_size > 0. ? settings.max_cell_size :
                                                         8. * settings.cell_size;
@@ -355,6 +505,8 @@ namespace coaxfit
     };
     if (!mesh_both(settings.full_quad))
       mesh_both(true);
+    tag_surfaces(shaft, true);
+    tag_surfaces(hub, false);
   }
 
 
@@ -443,10 +595,16 @@ namespace coaxfit
           local.refinement_points.push_back(end);
         Triangulation<2> &mesh = is_shaft ? shaft : hub;
         mesh.clear();
+        if (from_file(is_shaft))
+          {
+            mesh.copy_triangulation((is_shaft ? shaft_file : hub_file)->mesh);
+            continue;
+          }
         make_section_mesh(mesh,
                           modelled(is_shaft),
                           boundary(modelled(is_shaft), joint, is_shaft),
                           local);
+        tag_surfaces(mesh, is_shaft);
       }
   }
 } // namespace coaxfit

@@ -303,7 +303,7 @@ namespace coaxfit
       const auto speed = [](const double n) {
         return std::isinf(n) ? Json(nullptr) : Json(n);
       };
-      return {
+      Json j = {
         {"units", "MPa, N, N m, mm, degrees C, 1/min"},
         {"loads",
          {{"assembly_temperature", o.assembly_temperature},
@@ -346,6 +346,11 @@ namespace coaxfit
           {"hub_above_temperature_limit", a.joining_hub_above_limit}}},
         {"holds", a.holds},
         {"verdict", a.verdict}};
+      // Named faces (sections from gmsh files) only when given: the keys
+      // of every other run stay as they are.
+      for (const auto &[name, p] : o.face_pressures())
+        j["loads"]["face_pressures"][name] = p;
+      return j;
     }
   } // namespace
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 namespace coaxfit
 {
@@ -101,6 +102,16 @@ namespace coaxfit
                       "operation (pushes the hub onto the shaft). Allowed: "
                       "0 to 1e4.",
                       Patterns::Double(0., 1e4));
+    prm.add_parameter("Face pressures",
+                      face_pressures_text,
+                      "Pressures in MPa in operation on named faces of "
+                      "sections from gmsh files: 'name: p; name: p', each "
+                      "name a physical curve of the shaft's or the hub's "
+                      "file (both, if both have it; not joint or axis), the "
+                      "traction -p n on it. Not in the DIN 7190 column (a "
+                      "plain cylinder has no such faces). Allowed: 0 to 1e4 "
+                      "MPa each; empty: none.",
+                      Patterns::Anything());
     prm.add_parameter("Joining clearance",
                       joining_clearance_text,
                       "Diametral clearance in mm that a shrink or expansion "
@@ -152,12 +163,59 @@ namespace coaxfit
 
 
 
+  std::vector<std::pair<std::string, double>>
+  OperationParameters::face_pressures() const
+  {
+    const std::string entry
+      = "parameter Operation/Face pressures = '" + face_pressures_text + "'";
+    std::vector<std::pair<std::string, double>> result;
+    std::istringstream                          items(face_pressures_text);
+    std::string                                 item;
+    const auto trimmed = [](const std::string &text) {
+      const auto first = text.find_first_not_of(" \t");
+      const auto last  = text.find_last_not_of(" \t");
+      return first == std::string::npos ? std::string() :
+                                          text.substr(first, last - first + 1);
+    };
+    while (std::getline(items, item, ';'))
+      {
+        if (trimmed(item).empty())
+          continue;
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          throw InputError(entry + ": '" + trimmed(item)
+                           + "' is not 'name: p'; allowed: 'name: p; name: "
+                             "p' (p in MPa)");
+        const std::string name  = trimmed(item.substr(0, colon));
+        const double      value = parse_number(trimmed(item.substr(colon + 1)));
+        if (name.empty() || std::isnan(value))
+          throw InputError(entry + ": '" + trimmed(item)
+                           + "' is not 'name: p'; allowed: 'name: p; name: "
+                             "p' (p in MPa)");
+        require(value >= 0. && value <= 1e4,
+                "Operation/Face pressures (" + name + ")",
+                value,
+                "0 to 1e4 MPa");
+        for (const auto &[other, p] : result)
+          if (other == name)
+            throw InputError(entry + ": the face '" + name
+                             + "' is given twice; allowed: each name once");
+        result.emplace_back(name, value);
+      }
+    return result;
+  }
+
+
+
   bool
   OperationParameters::has_loads() const
   {
+    bool faces = false;
+    for (const auto &[name, p] : face_pressures())
+      faces = faces || p > 0.;
     return shaft_temperature() != assembly_temperature
            || hub_temperature() != assembly_temperature || speed > 0.
-           || shaft_bore_pressure > 0. || hub_outer_pressure > 0.;
+           || shaft_bore_pressure > 0. || hub_outer_pressure > 0. || faces;
   }
 
 
@@ -183,6 +241,7 @@ namespace coaxfit
             clearance,
             "auto or 0 <= clearance <= 0.1 D_F (D_F = " + number(joint_diameter)
               + " mm)");
+    face_pressures(); // throws on a malformed entry
     if (solid_shaft && shaft_bore_pressure > 0.)
       throw InputError("parameter Operation/Shaft bore pressure = "
                        + number(shaft_bore_pressure)

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/fe/section_file.h>
 #include <coaxfit/fe/section_scene.h>
 #include <coaxfit/parameters/material_library.h>
 #include <coaxfit/parameters/parameter_checks.h>
@@ -9,6 +10,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -1325,6 +1327,32 @@ namespace coaxfit
 
     for (const auto &[path, value] : overrides)
       set_entry(prm, path, value);
+
+    // A section from a gmsh file: its path relative to the parameter
+    // file, written absolute so that the run's parameters.prm repeats it
+    // from anywhere.
+    for (const auto &[entry, text] :
+         {std::pair<std::string, std::string *>{
+            "Shaft section", &parameters.drawing.shaft_section},
+          {"Hub section", &parameters.drawing.hub_section}})
+      if (is_section_file_name(*text))
+        {
+          const auto                  first = text->find_first_not_of(" \t");
+          const auto                  last  = text->find_last_not_of(" \t");
+          const std::filesystem::path given
+            = text->substr(first, last - first + 1);
+          const std::string resolved
+            = std::filesystem::absolute(
+                given.is_absolute() ?
+                  given :
+                  std::filesystem::path(filename).parent_path() / given)
+                .lexically_normal()
+                .string();
+          prm.enter_subsection("Geometry");
+          prm.set(entry, resolved);
+          prm.leave_subsection();
+          *text = resolved;
+        }
 
     // The scene has no silent defaults: name every entry that is missing.
     // deal.II joins the path with '.' and writes other characters than

@@ -184,6 +184,18 @@ namespace coaxfit
               p.mesh.hub_cell_size,
               "0 (Mesh/Cell size) or l_F / 1000 to l_F / 4 (l_F = "
                 + number(l_F) + " mm)");
+      if (scene->has_file() && p.mesh.shared_joint_nodes)
+        {
+          p.mesh.shared_joint_nodes = false;
+          p.read_notes.push_back(
+            "Mesh/Joint nodes = own: a gmsh file's mesh keeps its own joint "
+            "nodes (the other body's are projected onto them)");
+        }
+      if (scene->has_file())
+        p.read_notes.push_back(
+          "Mesh/Cell size and Mesh/Grading ratio do not apply to a section "
+          "from a gmsh file: its mesh is the file's (refined by Mesh/Global "
+          "refinements), the model whole");
       if (!p.mesh.shared_joint_nodes)
         {
           if (p.solver.linear_solver == LinearSolverType::amg
@@ -205,24 +217,32 @@ namespace coaxfit
       for (const bool shaft : {true, false})
         {
           const SectionOutline &s = scene->drawn(shaft);
-          if (s.area() / (64. * h * h) > 50000.)
+          if (!scene->from_file(shaft) && s.area() / (64. * h * h) > 50000.)
             throw InputError(
               "parameter Mesh/Cell size = " + number(h) + " mm would mesh "
               + s.entry() + " (area " + number(s.area())
               + " mm^2) into more than 50000 cells; use at least "
               + number(std::sqrt(s.area() / (64. * 50000.)), 3) + " mm");
         }
-      const OperationParameters &o = p.operation;
-      for (const auto &[name, value] :
-           {std::make_pair("Operation/Shaft bore pressure",
-                           o.shaft_bore_pressure),
-            std::make_pair("Operation/Hub outer pressure",
-                           o.hub_outer_pressure)})
-        require(value == 0.,
-                name,
-                value,
-                "0 with sections (this version puts no pressure on a "
-                "section's faces)");
+      // Named faces: each name on a face of a gmsh file's section.
+      std::set<std::string> names;
+      for (const bool shaft : {true, false})
+        for (const auto &[name, id] : scene->face_names(shaft))
+          if (name != "joint" && name != "axis")
+            names.insert(name);
+      for (const auto &[name, value] : p.operation.face_pressures())
+        if (names.count(name) == 0)
+          {
+            std::string list;
+            for (const std::string &n : names)
+              list += (list.empty() ? "" : ", ") + n;
+            throw InputError(
+              "parameter Operation/Face pressures names the face '" + name
+              + "', which no section's gmsh file has; allowed: "
+              + (list.empty() ? std::string("none (no named faces besides "
+                                            "joint and axis)") :
+                                list));
+          }
       const MeshParameters plain;
       if (p.mesh.axial_cells != plain.axial_cells
           || p.mesh.radial_cells != plain.radial_cells)
@@ -294,6 +314,12 @@ namespace coaxfit
   {
     if (p.drawing.has_sections())
       complete_sections(p, missing);
+    else if (!p.operation.face_pressures().empty())
+      throw InputError("parameter Operation/Face pressures = '"
+                       + p.operation.face_pressures_text
+                       + "' names faces, which only sections from gmsh "
+                         "files have; allowed: empty (plain cylinders take "
+                         "Shaft bore pressure and Hub outer pressure)");
     fill_material(p.shaft, "Shaft", missing);
     fill_material(p.hub, "Hub", missing);
     // A selection chooses the interference itself.

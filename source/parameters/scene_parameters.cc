@@ -81,7 +81,11 @@ namespace coaxfit
         "Mesh/Cell size decides the meshes. The joint is one cylinder or "
         "one cone (a taper fit: Fit/Push-on distance); a scene symmetric "
         "about a plane z = const is modelled as its half, any other whole "
-        "(doc/real_parts.md). Empty: the plain cylinders.";
+        "(doc/real_parts.md). Or a gmsh file, '.geo' or '.msh', its path "
+        "relative to the parameter file (x = r, y = z in mm; the physical "
+        "curve 'joint' is the surface that meets the other body; only "
+        "quadrilaterals): its mesh is used as it is, the scene modelled "
+        "whole with Mesh/Joint nodes = own. Empty: the plain cylinders.";
     prm.add_parameter("Shaft section",
                       shaft_section,
                       "Section of the shaft, the inner body. " + outline_rules,

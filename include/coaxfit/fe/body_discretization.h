@@ -13,6 +13,7 @@
 #include <coaxfit/parameters/parameters.h>
 
 #include <functional>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -32,13 +33,18 @@ namespace coaxfit
     double omega_squared  = 0.; ///< (rad/s)^2
     double inner_pressure = 0.; ///< MPa on the free bore
     double outer_pressure = 0.; ///< MPa on the free outer surface
+    /** MPa on the faces of each boundary id (named faces of a section). */
+    std::map<types::boundary_id, double> face_pressures;
 
     /** Whether any entry is not zero. */
     bool
     any() const
     {
+      bool faces = false;
+      for (const auto &[id, p] : face_pressures)
+        faces = faces || p != 0.;
       return thermal_strain != 0. || omega_squared != 0. || inner_pressure != 0.
-             || outer_pressure != 0.;
+             || outer_pressure != 0. || faces;
     }
   };
 

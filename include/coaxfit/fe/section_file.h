@@ -4,6 +4,8 @@
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
 
+#include <coaxfit/fe/section_outline.h>
+
 #include <map>
 #include <string>
 
@@ -46,6 +48,30 @@ namespace coaxfit
                     const std::string &filename,
                     const std::string &entry,
                     unsigned int       global_refinements = 0);
+
+  /**
+   * Whether the value @p text of `Geometry/Shaft section` or `Hub section`
+   * names a gmsh file rather than an outline: one word (no ';') ending in
+   * `.geo` or `.msh` (in any case).
+   */
+  bool
+  is_section_file_name(const std::string &text);
+
+  /**
+   * The boundary of the section mesh @p triangulation (as read by
+   * read_section_file(), before refinement) as an outline in drawing
+   * coordinates (z, D): its boundary vertices in order, neighbours on one
+   * straight line merged, so that a straight surface is one edge and a
+   * circle arc its chords. The outline is what SectionScene finds the
+   * joint, the plane of symmetry and D_aA from.
+   *
+   * @throws InputError "parameter @p entry = '@p filename': ..." if the
+   * boundary is not one closed loop (a section with a hole, or two pieces).
+   */
+  SectionOutline
+  outline_of_mesh(const Triangulation<2> &triangulation,
+                  const std::string      &entry,
+                  const std::string      &filename);
 } // namespace coaxfit
 
 #endif

@@ -7,6 +7,7 @@
 #include <coaxfit/fe/section_outline.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,9 +48,37 @@ namespace coaxfit
   public:
     /**
      * Parse, check and place the outlines @p shaft_text and @p hub_text.
+     * Either may instead name a gmsh file (is_section_file_name(), a path
+     * the caller has resolved): its mesh is read once (read_section_file())
+     * and its boundary is the outline the joint is found from
+     * (outline_of_mesh()). A scene with a file is modelled whole, its
+     * joint nodes are its own (the file's mesh is not changed), the file's
+     * physical curve `joint` must be the joint the sections make, faces on
+     * r = 0 are the axis, and on a cone the held face is tagged in it.
      * @throws InputError naming the entry (or both) at fault.
      */
     SectionScene(const std::string &shaft_text, const std::string &hub_text);
+
+    /** Whether the shaft's (@p shaft) or the hub's section is a gmsh file. */
+    bool
+    from_file(const bool shaft) const
+    {
+      return (shaft ? shaft_file : hub_file) != nullptr;
+    }
+
+    /** Whether either section is a gmsh file. */
+    bool
+    has_file() const
+    {
+      return from_file(true) || from_file(false);
+    }
+
+    /**
+     * The boundary ids of the named physical curves of a gmsh file section
+     * (empty for an outline).
+     */
+    std::map<std::string, types::boundary_id>
+    face_names(bool shaft) const;
 
     /** The outline as drawn of the shaft (@p shaft) or of the hub. */
     const SectionOutline &
@@ -209,7 +238,8 @@ namespace coaxfit
      * Mesh both modelled sections each on its own: the joint tagged but
      * its vertices chosen by gmsh from each body's @p shaft_settings or
      * @p hub_settings (cell size at the joint's ends), so that the joint
-     * nodes need not coincide.
+     * nodes need not coincide. A section from a gmsh file is its file's
+     * mesh as tagged by the constructor.
      */
     void
     make_own_meshes(Triangulation<2>          &shaft,
@@ -232,6 +262,42 @@ namespace coaxfit
     TaggedSegment
     joint_segment() const;
 
+    /** A section read from a gmsh file: its mesh as tagged for the run. */
+    struct FileSection
+    {
+      std::string                               path;
+      Triangulation<2>                          mesh;
+      std::map<std::string, types::boundary_id> names;
+    };
+
+    /**
+     * Read the gmsh file @p path of entry @p entry into a FileSection and
+     * return it with its boundary as an outline in @p outline.
+     */
+    static std::shared_ptr<FileSection>
+    read_file(const std::string               &path,
+              const std::string               &entry,
+              std::unique_ptr<SectionOutline> &outline);
+
+    /**
+     * Check that the file's physical curve `joint` is the joint found
+     * (its faces on the joint's line, covering it), tag its faces on
+     * r = 0 as the axis and, on a cone, its held face (@p shaft: the
+     * shaft's file); refuse a circle arc that begins at an end of the joint.
+     */
+    void
+    tag_file_mesh(FileSection &file, bool shaft, double tol) const;
+
+    /**
+     * Tag the faces of @p mesh (the shaft's, @p shaft, or the hub's) that
+     * carry the plain pressures of operation: the shaft's untagged faces
+     * at its bore diameter (a hollow shaft) BoundaryId::bore, the hub's at
+     * its largest diameter BoundaryId::outer.
+     */
+    void
+    tag_surfaces(Triangulation<2> &mesh, bool shaft) const;
+
+    std::shared_ptr<FileSection>    shaft_file, hub_file;
     std::unique_ptr<SectionOutline> shaft_drawn, hub_drawn;
     std::unique_ptr<SectionOutline> shaft_half, hub_half;
     double                          radius         = 0.;

@@ -193,6 +193,16 @@ namespace coaxfit
     double      shaft_bore_pressure = 0.; ///< MPa, on the shaft's bore
     double      hub_outer_pressure  = 0.; ///< MPa, on the hub's outer surface
     std::string joining_clearance_text = "auto"; ///< mm or auto
+    /** "name: p; name: p": MPa on the named faces of gmsh file sections. */
+    std::string face_pressures_text;
+
+    /**
+     * The pressures (MPa) on named faces, in the order given; throws
+     * InputError naming Operation/Face pressures if the text is not
+     * "name: p; ..." with 0 <= p <= 1e4 and each name once.
+     */
+    std::vector<std::pair<std::string, double>>
+    face_pressures() const;
 
     void
     declare_parameters(ParameterHandler &prm);

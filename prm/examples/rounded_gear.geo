@@ -5,10 +5,10 @@
 // The physical curve "joint" is the bore that meets the shaft; the other
 // names are faces that loads and reports can refer to.
 
-fine   = 0.25; // at the ends of the joint, where the pressure peaks
-middle = 2;    // at the joint's middle
-coarse = 3;    // elsewhere
-round  = 1;    // on the fillets
+fine   = 0.35; // at the ends of the joint, where the pressure peaks
+middle = 3;    // at the joint's middle
+coarse = 5;    // elsewhere
+round  = 2;    // on the fillets
 
 Point(1)  = {25, -25, 0, fine};
 Point(2)  = {25,   0, 0, middle};

@@ -300,8 +300,10 @@ main()
         "--set \"Geometry/Hub section=broken.geo\" hub_file.prm"},
        {"a joint curve longer than the joint (shaft z -10..10)",
         shorter + "--set \"Geometry/Hub section=long_joint.msh\" hub_file.prm"},
-       {"a rounded bore edge (an arc at the joint's end)",
-        "--set \"Geometry/Hub section=rounded_edge.geo\" hub_file.prm"},
+       {"a rounded bore edge over a shaft that ends under the fillet",
+        "--set \"Geometry/Shaft section=-19, 0; 19, 0; 19, 50; -19, 50; "
+        "-19, 0\" --set \"Geometry/Hub section=rounded_edge.geo\" "
+        "hub_file.prm"},
        {"a section with a hole",
         "--set \"Geometry/Hub section=holed.geo\" hub_file.prm"},
        {"AMG with a file (its joint nodes are its own)",

@@ -319,9 +319,10 @@ main()
      "--set \"Geometry/Hub section=-25, 50; -5, 50; -5, 52; 5, 52; 5, 50; "
      "25, 50; 25, 100; -25, 100; -25, 50\" "
        + gear},
-    {"a rounded bore edge (a fillet at the joint's end)",
+    {"a rounded bore edge over a shaft that ends under the fillet",
      "--set \"Geometry/Hub section=-25, 50, 3; 25, 50, 3; 25, 100; "
-     "-25, 100; -25, 50, 3\" "
+     "-25, 100; -25, 50, 3\" --set \"Geometry/Shaft section=-23, 0; 23, 0; "
+     "23, 50; -23, 50; -23, 0\" "
        + gear},
     {"an open outline",
      "--set \"Geometry/Shaft section=-100, 0; 100, 0; 100, 50; -100, 50\" "

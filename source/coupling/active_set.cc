@@ -96,8 +96,14 @@ namespace coaxfit
           unsigned int j = i;
           while (j + 1 < n && !contact[j + 1])
             ++j;
-          zones.emplace_back((i == 0) ? start : 0.5 * (z[i - 1] + z[i]),
-                             (j + 1 == n) ? end : 0.5 * (z[j] + z[j + 1]));
+          // Clipped to the joint: points beyond it (a rounded edge the
+          // contact may spread onto) are open by their shape.
+          const double a
+            = std::max(start, (i == 0) ? start : 0.5 * (z[i - 1] + z[i]));
+          const double b
+            = std::min(end, (j + 1 == n) ? end : 0.5 * (z[j] + z[j + 1]));
+          if (b > a)
+            zones.emplace_back(a, b);
           i = j;
         }
     return zones;

@@ -166,8 +166,21 @@ namespace coaxfit
     for (unsigned int i = 0; i < force.size(); ++i)
       {
         total += force[i];
-        area += lumped_weights[i];
+        // A rounded edge counts where it touches.
+        if (shape_gap.size() == 0 || shape_gap[i] == 0. || force[i] != 0.)
+          area += lumped_weights[i];
       }
     return total / area;
+  }
+
+
+
+  void
+  ContactInterface::set_shape_gap(const Vector<double> &gap)
+  {
+    AssertDimension(gap.size(), d_load.size());
+    shape_gap = gap;
+    for (unsigned int i = 0; i < d_load.size(); ++i)
+      d_load[i] -= gap[i];
   }
 } // namespace coaxfit

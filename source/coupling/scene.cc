@@ -8,6 +8,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 
@@ -30,9 +31,19 @@ namespace coaxfit
      * then at least as fine as @p b everywhere.
      */
     bool
-    nodes_interlace(const InterfaceSide &a, const InterfaceSide &b)
+    nodes_interlace(
+      const InterfaceSide                         &a,
+      const InterfaceSide                         &b,
+      const std::function<bool(const Point<2> &)> &counts
+      = [](const Point<2> &) { return true; })
     {
-      const std::vector<Point<2>> &pa = a.points(), &pb = b.points();
+      const std::vector<Point<2>> &pa = a.points();
+      std::vector<Point<2>>        pb;
+      for (const Point<2> &p : b.points())
+        if (counts(p))
+          pb.push_back(p);
+      if (pb.empty())
+        return true;
       const Tensor<1, 2> along     = (pa.back() - pa.front()) / a.length();
       const auto         positions = [&](const std::vector<Point<2>> &points) {
         std::vector<double> t;
@@ -219,6 +230,8 @@ namespace coaxfit
       bodies.emplace_back(make_body(parameters, name));
     joints.push_back(
       {0, 1, normal_interference(parameters), parameters.geometry.d});
+    if (parameters.sections && !parameters.sections->rounded_ends().empty())
+      rounded_side = parameters.sections->rounded_ends()[0].shaft ? 0u : 1u;
     if (parameters.sections)
       {
         // Both meshes at once: their joint vertices must coincide.
@@ -230,12 +243,14 @@ namespace coaxfit
                                            settings);
         else
           {
-            SectionMeshSettings hub = settings;
+            SectionMeshSettings shaft = settings, hub = settings;
+            // Over a rounded edge the straight body's joint vertices come
+            // from the rounded body's (SectionScene::make_own_meshes).
             if (parameters.mesh.hub_cell_size > 0.)
               hub.cell_size = parameters.mesh.hub_cell_size;
             parameters.sections->make_own_meshes((*meshes)[0],
                                                  (*meshes)[1],
-                                                 settings,
+                                                 shaft,
                                                  hub);
           }
         const unsigned int refinements = parameters.mesh.global_refinements;
@@ -287,9 +302,33 @@ namespace coaxfit
     // The side with more joint nodes is A, unless it is coarser than the
     // other somewhere (graded differently): then B's points there would
     // see fewer of A's nodes than they are, and A's condensed compliance
-    // M C_A M^T would be singular.
+    // M C_A M^T would be singular. Over a rounded edge the straight side
+    // is A (its values reach the fillet's points, the closest points of a
+    // curve on a line).
     const unsigned int more = sides[0].n_nodes() >= sides[1].n_nodes() ? 0 : 1;
-    if (nodes_interlace(sides[more], sides[1 - more]))
+    if (rounded_side)
+      {
+        mortar = 1 - *rounded_side;
+        // The fillet's points that can touch: a gap of the drawing of at
+        // most ten interferences (further up the fillet its points crowd
+        // over the straight side's, but stay open).
+        const double r_line = sides[mortar].points().front()[0];
+        const double reach  = 10. * joints[0].radial_interference;
+        if (!nodes_interlace(sides[mortar],
+                             sides[1 - mortar],
+                             [&](const Point<2> &p) {
+                               return std::abs(p[0] - r_line) <= reach;
+                             }))
+          throw InputError(
+            "parameters Mesh/Cell size and Mesh/Hub cell size: with a "
+            "rounded edge at the joint the body under it must be at least as "
+            "fine along the whole joint as the rounded one ("
+            + std::to_string(sides[mortar].n_nodes()) + " against "
+            + std::to_string(sides[1 - mortar].n_nodes())
+            + " joint nodes); give the body under the edge the smaller cell "
+              "size");
+      }
+    else if (nodes_interlace(sides[more], sides[1 - more]))
       mortar = more;
     else if (nodes_interlace(sides[1 - more], sides[more]))
       mortar = 1 - more;

@@ -120,9 +120,12 @@ namespace coaxfit
     // squares with the weights w, s = sum w d_i du / sum w du^2, du =
     // u2 - u1) is the same step scaled by s. With nothing to close
     // (clearance everywhere) the start is the paper's zero force.
-    double num = 0., den = 0.;
+    double                num = 0., den = 0.;
+    const Vector<double> &gap = interface.drawing_gap();
     for (unsigned int i = 0; i < state.force.size(); ++i)
       {
+        if (gap.size() > 0 && gap[i] > 0.)
+          continue; // open by its shape (a rounded edge)
         const double du = state.u2[i] - state.u1[i];
         num += interface.weights()[i] * interface.interference(i) * du;
         den += interface.weights()[i] * du * du;
@@ -145,7 +148,15 @@ namespace coaxfit
     next_force.reinit(n);
     start_loaded = update->loaded_start();
     if (start_loaded)
-      next_force = interface.weights();
+      {
+        // A uniform unit pressure on the joint (not on a rounded edge
+        // beyond it, open by its shape).
+        next_force                = interface.weights();
+        const Vector<double> &gap = interface.drawing_gap();
+        for (unsigned int i = 0; i < gap.size(); ++i)
+          if (gap[i] > 0.)
+            next_force[i] = 0.;
+      }
     if (initial_force.size() == n)
       {
         next_force   = initial_force;

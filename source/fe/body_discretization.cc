@@ -415,16 +415,40 @@ namespace coaxfit
     // The interface value of a point is the displacement along the
     // joint's normal pointing out of the shaft (u_r on a cylinder). A joint
     // not on a cylinder (a cone) is solved in that frame (BodySolver).
+    // A curved chain (a joint that goes on over a fillet) keeps the radial
+    // frame: gap and force are radial there, which the contact on a
+    // fillet's flat beginning needs (its slope is small where it touches;
+    // its steep part never closes).
     frame.resize(normals.size());
-    rotated = false;
+    load_factor.resize(normals.size());
+    rotated     = false;
+    curved      = false;
+    double side = 0.;
     for (unsigned int i = 0; i < normals.size(); ++i)
       {
+        side += normals[i][0];
+        curved = curved || (normals[i] - normals[0]).norm() > 1e-9;
+      }
+    for (unsigned int i = 0; i < normals.size(); ++i)
+      {
+        if (curved)
+          {
+            frame[i]       = Tensor<1, 2>({1., 0.});
+            load_factor[i] = side > 0. ? 1. : -1.;
+            continue;
+          }
         if (!(normals[i][0] > 0.05 || normals[i][0] < -0.05))
           throw std::logic_error("the joint of a body runs along its radius "
                                  "(a face): not modelled");
         frame[i] = normals[i][0] > 0. ? normals[i] : -normals[i];
         rotated  = rotated || std::abs(frame[i][1]) > 1e-12;
       }
+    // The interface DoF's share of a contact force: n_r = +-1 on a
+    // cylinder, +-1 along the frame's normal on a cone.
+    if (!curved)
+      for (unsigned int i = 0; i < normals.size(); ++i)
+        load_factor[i]
+          = rotated ? (normals[i][0] > 0. ? 1. : -1.) : normals[i][0];
     if (rotated)
       for (const auto dof : interface_dofs)
         if (constraints.is_constrained(dof))
@@ -551,7 +575,7 @@ namespace coaxfit
           = !prescribed[i] ? force[i] :
             rotated        ? normals[i][0] * residual[dofs[i]]
                         + normals[i][1] * residual[interface_axial_dofs[i]] :
-                      normals[i][0] * residual[dofs[i]];
+                      load_factor[i] * residual[dofs[i]];
       }
   }
 

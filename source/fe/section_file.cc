@@ -1,3 +1,5 @@
+#include <deal.II/grid/manifold_lib.h>
+
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/gmsh_session.h>
 #include <coaxfit/fe/gmsh_transfer.h>
@@ -204,15 +206,22 @@ namespace coaxfit
                   const std::string      &filename)
   {
     const std::string context = "parameter " + entry + " = '" + filename + "'";
-    // The boundary faces as vertex pairs, each vertex's two neighbours.
+    // The boundary faces as vertex pairs, each vertex's two neighbours,
+    // and the manifold of each face.
     std::map<unsigned int, std::vector<unsigned int>> neighbours;
-    std::size_t                                       n_faces = 0;
+    std::map<std::pair<unsigned int, unsigned int>, types::manifold_id>
+                face_manifold;
+    std::size_t n_faces = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
           {
-            neighbours[face->vertex_index(0)].push_back(face->vertex_index(1));
-            neighbours[face->vertex_index(1)].push_back(face->vertex_index(0));
+            const unsigned int a = face->vertex_index(0),
+                               b = face->vertex_index(1);
+            neighbours[a].push_back(b);
+            neighbours[b].push_back(a);
+            face_manifold[{std::min(a, b), std::max(a, b)}]
+              = face->manifold_id();
             ++n_faces;
           }
     const std::vector<Point<2>> &vertices = triangulation.get_vertices();
@@ -224,13 +233,13 @@ namespace coaxfit
                          + "); a section must be one region bounded by one "
                            "closed curve");
     // Walk the loop from its first vertex.
-    std::vector<Point<2>> loop;
-    const unsigned int    start    = neighbours.begin()->first;
-    unsigned int          previous = start, current = neighbours[start][0];
-    loop.push_back(vertices[start]);
+    std::vector<unsigned int> loop;
+    const unsigned int        start    = neighbours.begin()->first;
+    unsigned int              previous = start, current = neighbours[start][0];
+    loop.push_back(start);
     while (current != start && loop.size() <= n_faces)
       {
-        loop.push_back(vertices[current]);
+        loop.push_back(current);
         const std::vector<unsigned int> &next = neighbours[current];
         const unsigned int following = next[0] == previous ? next[1] : next[0];
         previous                     = current;
@@ -241,21 +250,106 @@ namespace coaxfit
                        + "not one closed curve (a hole, or pieces that do "
                          "not touch); a section must be one region without "
                          "holes");
-    // Neighbours on one straight line merged (relative to the edges).
-    std::vector<Point<2>> corners;
-    const std::size_t     n = loop.size();
+    const std::size_t n        = loop.size();
+    const auto        manifold = [&](const std::size_t i) {
+      const unsigned int a = loop[i % n], b = loop[(i + 1) % n];
+      return face_manifold.at({std::min(a, b), std::max(a, b)});
+    };
+    // Start at a straight face that follows a face on another manifold (or
+    // anywhere if the boundary has no arc), so that no arc wraps round.
+    std::size_t first = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (manifold(i) == numbers::flat_manifold_id
+          && manifold(i + n - 1) != numbers::flat_manifold_id)
+        {
+          first = i;
+          break;
+        }
+    std::rotate(loop.begin(), loop.begin() + first, loop.end());
+
+    // Pieces: straight faces, and arcs (consecutive faces on one manifold).
+    struct Piece
+    {
+      std::vector<Point<2>> points; ///< from start to end
+      types::manifold_id    manifold;
+    };
+    std::vector<Piece> pieces;
     for (std::size_t i = 0; i < n; ++i)
       {
-        const Point<2> &a = loop[(i + n - 1) % n], &b = loop[i],
-                       &c    = loop[(i + 1) % n];
-        const Tensor<1, 2> u = b - a, w = c - b;
-        if (std::abs(cross(u, w)) > 1e-10 * u.norm() * w.norm() || u * w < 0.)
-          corners.push_back(b);
+        const types::manifold_id m = manifold(i);
+        if (m != numbers::flat_manifold_id && !pieces.empty()
+            && pieces.back().manifold == m)
+          pieces.back().points.push_back(vertices[loop[(i + 1) % n]]);
+        else
+          pieces.push_back(
+            {{vertices[loop[i]], vertices[loop[(i + 1) % n]]}, m});
+      }
+    // An arc tangent to the straight pieces on both sides is a fillet: its
+    // corner is where their lines meet. Any other arc stays as its chords.
+    const std::size_t     k = pieces.size();
+    std::vector<double>   fillet(k, 0.);
+    std::vector<Point<2>> corner(k);
+    for (std::size_t j = 0; j < k; ++j)
+      {
+        const Piece &arc = pieces[j], &before = pieces[(j + k - 1) % k],
+                    &after = pieces[(j + 1) % k];
+        if (arc.manifold == numbers::flat_manifold_id
+            || before.manifold != numbers::flat_manifold_id
+            || after.manifold != numbers::flat_manifold_id)
+          continue;
+        const auto *polar = dynamic_cast<const PolarManifold<2> *>(
+          &triangulation.get_manifold(arc.manifold));
+        if (polar == nullptr)
+          continue;
+        const Point<2>    &p = arc.points.front(), &q = arc.points.back();
+        const double       R = p.distance(polar->center);
+        const Tensor<1, 2> t_in
+          = (before.points.back() - before.points.front())
+            / before.points.front().distance(before.points.back());
+        const Tensor<1, 2> t_out
+          = (after.points.back() - after.points.front())
+            / after.points.front().distance(after.points.back());
+        const double turn = cross(t_in, t_out);
+        if (std::abs((p - polar->center) * t_in) > 1e-6 * R
+            || std::abs((q - polar->center) * t_out) > 1e-6 * R
+            || std::abs(turn) < 1e-6)
+          continue;
+        // p + s t_in = q - u t_out.
+        const double s = cross(q - p, t_out) / turn;
+        corner[j]      = p + s * t_in;
+        fillet[j]      = R;
       }
     std::vector<OutlineCorner> points;
-    for (const Point<2> &p : corners)
-      points.push_back(OutlineCorner{p[1], 2. * p[0], 0.});
-    points.push_back(points.front()); // closed explicitly
-    return SectionOutline(points, entry);
+    for (std::size_t j = 0; j < k; ++j)
+      {
+        if (fillet[j] > 0.)
+          {
+            points.push_back({corner[j][1], 2. * corner[j][0], fillet[j]});
+            continue;
+          }
+        // A straight piece after a fillet starts at its tangent point,
+        // which the fillet's corner replaces.
+        const std::size_t from = fillet[(j + k - 1) % k] > 0. ? 1 : 0;
+        for (std::size_t i = from; i + 1 < pieces[j].points.size(); ++i)
+          points.push_back(
+            {pieces[j].points[i][1], 2. * pieces[j].points[i][0], 0.});
+      }
+    // Sharp corners on one straight line with their neighbours merged.
+    std::vector<OutlineCorner> merged;
+    const std::size_t          m = points.size();
+    for (std::size_t i = 0; i < m; ++i)
+      {
+        const OutlineCorner &a = points[(i + m - 1) % m], &b = points[i],
+                            &c = points[(i + 1) % m];
+        const Tensor<1, 2> u({b.diameter - a.diameter, b.z - a.z}),
+          w({c.diameter - b.diameter, c.z - b.z});
+        if (b.fillet_radius > 0.
+            || std::abs(cross(u, w)) > 1e-10 * u.norm() * w.norm()
+            || u * w < 0.)
+          merged.push_back(b);
+      }
+    merged.push_back(merged.front()); // closed explicitly
+    return SectionOutline(merged, entry);
   }
+
 } // namespace coaxfit

@@ -177,24 +177,6 @@ namespace coaxfit
       throw InputError(both
                        + "the shaft's section lies outside the hub's at "
                          "the joint; the shaft must be the inner body");
-    // A fillet that begins where the joint ends: contact would spread onto
-    // it (its gap opens with the square of the distance), which a joint
-    // on the straight part alone cannot represent.
-    for (const SectionOutline *outline : {shaft_drawn.get(), hub_drawn.get()})
-      for (const OutlineEdge &edge : outline->edges())
-        if (edge.is_arc())
-          for (const Point<2> &end : {joint.start, joint.end})
-            if (std::min(edge.start.distance(end), edge.end.distance(end))
-                <= tol)
-              throw InputError(
-                "parameter " + outline->entry() + ": a fillet (R "
-                + number(edge.radius, 6) + ") begins at the end of the "
-                + "joint (z = " + number(end[1], 6)
-                + ", D = " + number(2. * end[0], 6)
-                + "): contact on a rounded edge is not modelled yet (the "
-                  "joint would end at its tangent point as at a sharp "
-                  "edge, with a wrong pressure peak); draw the edge sharp "
-                  "or chamfered");
     cone              = std::abs(joint.start[0] - joint.end[0]) > tol;
     const double z_lo = std::min(joint.start[1], joint.end[1]);
     const double z_hi = std::max(joint.start[1], joint.end[1]);
@@ -234,6 +216,7 @@ namespace coaxfit
         shaft_half = std::make_unique<SectionOutline>(*shaft_drawn);
         hub_half   = std::make_unique<SectionOutline>(*hub_drawn);
       }
+    find_rounded_ends(tol);
     for (const bool shaft : {true, false})
       if (from_file(shaft))
         tag_file_mesh(*(shaft ? shaft_file : hub_file), shaft, tol);
@@ -279,7 +262,24 @@ namespace coaxfit
     const SectionOutline &outline = drawn(shaft);
     const std::string     context
       = "parameter " + outline.entry() + " = '" + file.path + "'";
-    const Point<2> a(r_start, z_start), b(r_end, z_start + 2. * half_length);
+    // The straight surface that can touch: the joint, and under the other
+    // section's rounded edge the straight surface as far as its fillet
+    // reaches; this section's own rounded edges are arcs beyond the joint.
+    bool rounded_here = false;
+    for (const RoundedEnd &r : rounded)
+      rounded_here = rounded_here || r.shaft == shaft;
+    const TaggedSegment line
+      = rounded_here ? joint_segment() : contact_segment(shaft);
+    const Point<2> a = line.start, b = line.end;
+    const auto     on_fillet = [&](const Point<2> &p) {
+      for (const RoundedEnd &r : rounded)
+        if (r.shaft == shaft && p[0] >= std::min(r.tangent[0], r.far[0]) - tol
+            && p[0] <= std::max(r.tangent[0], r.far[0]) + tol
+            && p[1] >= std::min(r.tangent[1], r.far[1]) - tol
+            && p[1] <= std::max(r.tangent[1], r.far[1]) + tol)
+          return true;
+      return false;
+    };
     const Tensor<1, 2> along    = (b - a) / (b - a).norm();
     const auto         on_joint = [&](const Point<2> &p) {
       const Tensor<1, 2> d = p - a;
@@ -311,6 +311,14 @@ namespace coaxfit
         if (face->at_boundary())
           {
             const Point<2> p = face->vertex(0), q = face->vertex(1);
+            // A rounded edge of this section at the joint: its arc's faces
+            // are where contact may spread.
+            if (face->manifold_id() != numbers::flat_manifold_id && on_fillet(p)
+                && on_fillet(q))
+              {
+                face->set_boundary_id(BoundaryId::joint);
+                continue;
+              }
             if (face->boundary_id() == BoundaryId::joint)
               {
                 if (!on_joint(p) || !on_joint(q))
@@ -323,26 +331,24 @@ namespace coaxfit
                 continue;
               }
             if (on_joint(p) && on_joint(q))
-              throw InputError(context + ": a face from " + where(p) + " to "
-                               + where(q) + " lies on " + joint_text
-                               + " but not in the physical curve 'joint'");
+              {
+                // Under the other section's rounded edge the surface goes on
+                // beyond the joint: contact may spread onto it.
+                if (!rounded_here && !rounded.empty())
+                  {
+                    face->set_boundary_id(BoundaryId::joint);
+                    covered += p.distance(q);
+                    continue;
+                  }
+                throw InputError(context + ": a face from " + where(p) + " to "
+                                 + where(q) + " lies on " + joint_text
+                                 + " but not in the physical curve 'joint'");
+              }
             if (p[0] <= tol && q[0] <= tol)
               face->set_boundary_id(BoundaryId::axis);
             for (const TaggedSegment &s : held)
               if (on_segment(s, p) && on_segment(s, q))
                 face->set_boundary_id(BoundaryId::held);
-            // A circle arc that begins at an end of the joint: contact
-            // would spread onto it.
-            if (face->manifold_id() != numbers::flat_manifold_id)
-              for (const Point<2> &end : {a, b})
-                if (std::min(p.distance(end), q.distance(end)) <= tol)
-                  throw InputError(
-                    context + ": a circle arc begins at the end of the "
-                    + "joint " + where(end)
-                    + ": contact on a rounded edge is not modelled yet (the "
-                      "joint would end at its tangent point as at a sharp "
-                      "edge, with a wrong pressure peak); draw the edge "
-                      "sharp or chamfered");
           }
     tag_surfaces(file.mesh, shaft);
     if (std::abs(covered - (b - a).norm()) > 1e3 * tol)
@@ -350,6 +356,90 @@ namespace coaxfit
                        + number(covered, 6) + " mm of " + joint_text + " ("
                        + number((b - a).norm(), 6)
                        + " mm); it must cover all of it");
+  }
+
+
+
+  void
+  SectionScene::find_rounded_ends(const double tol)
+  {
+    // A fillet of one section that begins at an end of the joint (its
+    // tangent point): contact may spread onto it, over the other section's
+    // straight surface, which must go on beyond the joint's end as far as
+    // the fillet reaches.
+    std::vector<Point<2>> ends{Point<2>(r_end, joint_end())};
+    if (!half)
+      ends.insert(ends.begin(), Point<2>(r_start, joint_start()));
+    for (const bool is_shaft : {true, false})
+      for (const OutlineEdge &edge : modelled(is_shaft).edges())
+        for (const Point<2> &end : ends)
+          {
+            if (!edge.is_arc()
+                || std::min(edge.start.distance(end), edge.end.distance(end))
+                     > tol)
+              continue;
+            const SectionOutline &outline = modelled(is_shaft);
+            const Point<2>        far
+              = edge.start.distance(end) <= tol ? edge.end : edge.start;
+            const std::string where
+              = "the end of the joint (z = " + number(end[1] + z_m, 6)
+                + ", D = " + number(2. * end[0], 6) + ")";
+            if (cone)
+              throw InputError("parameter " + outline.entry()
+                               + ": a fillet begins at " + where
+                               + " of a taper; rounded edges are modelled "
+                                 "on cylindrical joints only");
+            // The other section's straight surface r = R beyond the end.
+            const SectionOutline                  &other = modelled(!is_shaft);
+            std::vector<std::pair<double, double>> covered;
+            for (const OutlineEdge &e : other.edges())
+              if (!e.is_arc() && std::abs(e.start[0] - radius) <= tol
+                  && std::abs(e.end[0] - radius) <= tol)
+                covered.emplace_back(std::min(e.start[1], e.end[1]),
+                                     std::max(e.start[1], e.end[1]));
+            std::sort(covered.begin(), covered.end());
+            const double lo = std::min(end[1], far[1]),
+                         hi = std::max(end[1], far[1]);
+            double reach    = lo;
+            for (const auto &[a, b] : covered)
+              if (a <= reach + tol)
+                reach = std::max(reach, b);
+            if (reach < hi - tol)
+              throw InputError(
+                "parameters " + outline.entry() + " and " + other.entry()
+                + ": the fillet (R " + number(edge.radius, 6)
+                + ") that begins at " + where
+                + " reaches z = " + number(far[1] + z_m, 6) + ", but "
+                + other.entry().substr(other.entry().find('/') + 1)
+                + " does not go on straight at D = " + number(2. * radius, 6)
+                + " that far, so contact could not spread onto it; allowed: "
+                  "a rounded edge over a straight surface of the other "
+                  "section (or a sharp or chamfered edge)");
+            for (const RoundedEnd &r : rounded)
+              if (std::abs(r.tangent[1] - end[1]) <= tol)
+                throw InputError(both + "both sections are rounded at " + where
+                                 + "; allowed: one rounded edge over a "
+                                   "straight surface of the other section");
+            rounded.push_back({is_shaft, end, far, edge.radius});
+          }
+  }
+
+
+
+  TaggedSegment
+  SectionScene::contact_segment(const bool shaft) const
+  {
+    TaggedSegment segment = joint_segment();
+    for (const RoundedEnd &r : rounded)
+      {
+        const Point<2> p
+          = r.shaft == shaft ? r.far : Point<2>(radius, r.far[1]);
+        if (r.tangent[1] < 0.5 * (joint_start() + joint_end()))
+          segment.start = p;
+        else
+          segment.end = p;
+      }
+    return segment;
   }
 
 
@@ -584,15 +674,63 @@ namespace coaxfit
                                 const SectionMeshSettings &shaft_settings,
                                 const SectionMeshSettings &hub_settings) const
   {
-    const Point<2> end   = joint_segment().end;
-    TaggedSegment  joint = joint_segment();
-    joint.refine_ends    = !half; // the middle of a half model is no end
-    for (const bool is_shaft : {true, false})
+    const Point<2> end = joint_segment().end;
+    // Over a rounded edge the rounded body first: the straight body's joint
+    // gets the z of its joint vertices, so that it has a node between every
+    // two of the rounded side's points (its values carry the projection
+    // onto them).
+    std::vector<bool> order = {true, false};
+    if (!rounded.empty())
+      order = {rounded[0].shaft, !rounded[0].shaft};
+    for (const bool is_shaft : order)
       {
+        TaggedSegment joint = contact_segment(is_shaft);
+        joint.refine_ends   = !half; // the middle of a half model is no end
+        if (!rounded.empty() && is_shaft != rounded[0].shaft)
+          {
+            const double        tol = 1e-9 * modelled(is_shaft).extent();
+            std::vector<double> z;
+            for (const auto &cell :
+                 (is_shaft ? hub : shaft).active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary()
+                    && face->boundary_id() == BoundaryId::joint)
+                  for (const unsigned int v : {0u, 1u})
+                    z.push_back(face->vertex(v)[1]);
+            std::sort(z.begin(), z.end());
+            z.erase(std::unique(z.begin(),
+                                z.end(),
+                                [&](const double a, const double b) {
+                                  return b - a <= tol;
+                                }),
+                    z.end());
+            const double lo = std::min(joint.start[1], joint.end[1]),
+                         hi = std::max(joint.start[1], joint.end[1]);
+            std::vector<double> fixed;
+            for (const double zi : z)
+              if (zi > lo + tol && zi < hi - tol)
+                fixed.push_back(zi);
+            if (joint.start[1] > joint.end[1])
+              std::reverse(fixed.begin(), fixed.end());
+            for (const double zi : fixed)
+              joint.vertices.emplace_back(radius, zi);
+          }
         SectionMeshSettings local = is_shaft ? shaft_settings : hub_settings;
         local.refinement_points.clear();
         if (half)
           local.refinement_points.push_back(end);
+        // A rounded edge: the finest cells where contact leaves the joint,
+        // an eighth of the cell size at its tangent points (contact spreads
+        // onto the fillet by a few hundredths of a mm), as coarse as the
+        // cell size makes it elsewhere.
+        for (const RoundedEnd &r : rounded)
+          local.refinement_points.push_back(r.tangent);
+        if (!rounded.empty() && is_shaft == rounded[0].shaft)
+          {
+            if (local.max_cell_size <= 0.)
+              local.max_cell_size = 8. * local.cell_size;
+            local.cell_size /= 8.;
+          }
         Triangulation<2> &mesh = is_shaft ? shaft : hub;
         mesh.clear();
         if (from_file(is_shaft))

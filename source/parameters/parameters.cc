@@ -561,7 +561,9 @@ namespace coaxfit
                       "projection M and the forces go back by M^T (total "
                       "force conserved), with the condensed operator of the "
                       "staggered method (Solver/Method = staggered, "
-                      "Solver/Linear solver direct) and no coarse model.");
+                      "Solver/Linear solver direct) and no coarse model. A "
+                      "section from a gmsh file or a rounded edge at the "
+                      "joint always takes own.");
     prm.add_action("Joint nodes", [this](const std::string &value) {
       shared_joint_nodes = value == "shared";
     });

@@ -184,18 +184,15 @@ namespace coaxfit
               p.mesh.hub_cell_size,
               "0 (Mesh/Cell size) or l_F / 1000 to l_F / 4 (l_F = "
                 + number(l_F) + " mm)");
-      if (scene->has_file() && p.mesh.shared_joint_nodes)
-        {
-          p.mesh.shared_joint_nodes = false;
-          p.read_notes.push_back(
-            "Mesh/Joint nodes = own: a gmsh file's mesh keeps its own joint "
-            "nodes (the other body's are projected onto them)");
-        }
+      // A gmsh file's mesh is used as it is: the model whole, its joint
+      // nodes its own (documented with the entries; no note).
       if (scene->has_file())
-        p.read_notes.push_back(
-          "Mesh/Cell size and Mesh/Grading ratio do not apply to a section "
-          "from a gmsh file: its mesh is the file's (refined by Mesh/Global "
-          "refinements), the model whole");
+        p.mesh.shared_joint_nodes = false;
+      // A rounded edge at the joint: the fillet's nodes lie on its arc,
+      // the other body's under it on a straight line; they are coupled by
+      // the projection of meshes of their own.
+      if (!scene->rounded_ends().empty())
+        p.mesh.shared_joint_nodes = false;
       if (!p.mesh.shared_joint_nodes)
         {
           if (p.solver.linear_solver == LinearSolverType::amg

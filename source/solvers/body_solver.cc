@@ -141,15 +141,13 @@ namespace coaxfit
                           const Vector<double>    &displacement,
                           const Vector<double>    &force)
   {
-    const auto                 &dofs   = body.get_interface_dofs();
-    const SparseMatrix<double> &K      = stiffness();
-    const auto                 &normal = body.interface_normals();
+    const auto                 &dofs = body.get_interface_dofs();
+    const SparseMatrix<double> &K    = stiffness();
     AssertDimension(prescribed.size(), dofs.size());
 
-    // Contact forces act against the outward normal; prescribed points
-    // are lifted and eliminated symmetrically. In the joint's frame (a
-    // cone) the DoF of point i is u . n_i, n_i the frame's normal, and the
-    // force's component along it is -(outward normal . n_i) = -+1.
+    // Contact forces act against the outward normal (their share on the
+    // interface DoF: BodyDiscretization::interface_load_factor()); prescribed
+    // points are lifted and eliminated symmetrically.
     Vector<double> rhs(body.n_dofs());
     Vector<double> lift(body.n_dofs());
     bool           any_prescribed = false;
@@ -159,10 +157,8 @@ namespace coaxfit
           lift[dofs[i]]  = displacement[i];
           any_prescribed = true;
         }
-      else if (body.rotated_frame())
-        rhs[dofs[i]] = normal[i][0] > 0. ? -force[i] : force[i];
       else
-        rhs[dofs[i]] = -normal[i][0] * force[i];
+        rhs[dofs[i]] = -body.interface_load_factor()[i] * force[i];
     if (any_prescribed)
       {
         Vector<double> K_lift(body.n_dofs());
@@ -223,12 +219,9 @@ namespace coaxfit
     cholesky.trailing_inverse(factorization(none), compliance);
     // A unit contact force at point j is the load -n_j e_j (n_j = +-e_r),
     // in the joint's frame -+1 along its DoF.
-    const auto &normal = body.interface_normals();
     for (unsigned int i = 0; i < compliance.m(); ++i)
       for (unsigned int j = 0; j < compliance.n(); ++j)
-        compliance(i, j) *= body.rotated_frame() ?
-                              (normal[j][0] > 0. ? -1. : 1.) :
-                              -normal[j][0];
+        compliance(i, j) *= -body.interface_load_factor()[j];
   }
 
 

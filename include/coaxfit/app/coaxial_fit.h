@@ -177,6 +177,22 @@ namespace coaxfit
 
   private:
     /**
+     * The drawing's gap at each interface point over a rounded edge
+     * (ContactInterface::set_shape_gap()).
+     */
+    Vector<double>
+    rounded_edge_gap() const;
+
+    /**
+     * The active set a solve of @p contact starts from: every point in
+     * contact but those a rounded edge leaves open by its shape.
+     */
+    static UnilateralActiveSet
+    initial_active_set(const ContactInterface     &contact,
+                       bool                        unilateral,
+                       UnilateralActiveSet::Update mode);
+
+    /**
      * Each body's field under its loads of operation (free contact
      * surface) and the contact interface with the interference they leave.
      */

@@ -109,6 +109,24 @@ namespace coaxfit
       return d_load[i];
     }
 
+    /**
+     * The gap @p gap (mm, >= 0) the drawing leaves at each point: where one
+     * section's rounded edge rises from the other's straight surface (0 on
+     * the joint itself). It is taken from the interference of each point,
+     * d_i = d + u1_load_i - u2_load_i - gap_i, so that contact spreads onto
+     * the edge where the deformation closes it; the convergence scale stays
+     * that of the interference.
+     */
+    void
+    set_shape_gap(const Vector<double> &gap);
+
+    /** The gap of the drawing at each point (empty: none). */
+    const Vector<double> &
+    drawing_gap() const
+    {
+      return shape_gap;
+    }
+
     /** The two sides of the joint: the inner body (D1), the outer (D2). */
     enum class Side
     {
@@ -183,6 +201,7 @@ namespace coaxfit
     std::vector<double> z_coordinates;
     Vector<double>      lumped_weights;
     Vector<double>      u1_load, u2_load, d_load;
+    Vector<double>      shape_gap; ///< set_shape_gap(); empty: none
     double              scale;
   };
 } // namespace coaxfit

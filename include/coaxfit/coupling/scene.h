@@ -11,6 +11,7 @@
 #include <coaxfit/solvers/condensed_body.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -197,6 +198,8 @@ namespace coaxfit
     std::vector<JointSides> joints; ///< between neighbours, inside out
 
   private:
+    /** The body with a rounded edge at the joint (a section's fillet). */
+    std::optional<unsigned int>           rounded_side;
     std::shared_ptr<const MortarTransfer> transfer;
     unsigned int                          mortar = 0;
   };

@@ -217,6 +217,29 @@ namespace coaxfit
       return rotated;
     }
 
+    /**
+     * The share of a contact force F_i that acts on the interface DoF of
+     * point i: its load is -c_i F_i, and a reaction r there gives
+     * F_i = c_i r. The outward normal's n_r (+-1) on a cylinder, +-1 on a
+     * cone (its DoF is u . n), the body's side +-1 on a curved joint (a
+     * fillet: radial frame).
+     */
+    const std::vector<double> &
+    interface_load_factor() const
+    {
+      return load_factor;
+    }
+
+    /**
+     * Whether the joint is curved (it goes on over a fillet): its values
+     * are then radial, u_r, and its forces radial too.
+     */
+    bool
+    curved_joint() const
+    {
+      return curved;
+    }
+
     /** @p v (a vector over the DoFs) into the joint's frame: R^T v. */
     void
     to_interface_frame(Vector<double> &v) const;
@@ -398,7 +421,9 @@ namespace coaxfit
     Vector<double>                       weights;
     std::vector<Tensor<1, 2>>            normals;
     std::vector<Tensor<1, 2>>            frame; ///< interface_frame()
-    bool                                 rotated   = false;
+    bool                                 rotated = false;
+    bool                                 curved  = false;
+    std::vector<double>                  load_factor;
     types::global_dof_index              axial_pin = numbers::invalid_dof_index;
   };
 } // namespace coaxfit

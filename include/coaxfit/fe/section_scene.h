@@ -126,6 +126,35 @@ namespace coaxfit
       return radius;
     }
 
+    /**
+     * An end of the joint where one section's edge is rounded (a fillet
+     * that begins at the joint's end, tangent to it): contact may spread
+     * onto the fillet, over the other section's straight surface.
+     */
+    struct RoundedEnd
+    {
+      bool     shaft;   ///< whose edge is rounded
+      Point<2> tangent; ///< the joint's end (model r, z)
+      Point<2> far;     ///< the other end of the fillet's arc
+      double   radius;  ///< of the fillet (mm)
+    };
+
+    /** The rounded ends of the joint (none: sharp or chamfered ends). */
+    const std::vector<RoundedEnd> &
+    rounded_ends() const
+    {
+      return rounded;
+    }
+
+    /**
+     * The part of a body's boundary tagged BoundaryId::joint, the joint
+     * and where contact may spread: over each rounded end the fillet's arc
+     * (@p shaft's own fillet) or the straight surface under it (the other
+     * body's), to where the arc ends.
+     */
+    TaggedSegment
+    contact_segment(bool shaft) const;
+
     /** Whether the joint is a cone (a taper fit). */
     bool
     conical() const
@@ -297,13 +326,22 @@ namespace coaxfit
     void
     tag_surfaces(Triangulation<2> &mesh, bool shaft) const;
 
-    std::shared_ptr<FileSection>    shaft_file, hub_file;
+    std::shared_ptr<FileSection> shaft_file, hub_file;
+
+    /**
+     * Find the rounded ends of the joint (a fillet of one modelled section
+     * beginning at an end of the joint); @p tol the drawing tolerance.
+     */
+    void
+    find_rounded_ends(double tol);
+
     std::unique_ptr<SectionOutline> shaft_drawn, hub_drawn;
     std::unique_ptr<SectionOutline> shaft_half, hub_half;
-    double                          radius         = 0.;
-    double                          r_start        = 0.; ///< at joint_start
-    double                          r_end          = 0.; ///< at joint_end
-    bool                            cone           = false;
+    double                          radius  = 0.;
+    double                          r_start = 0.; ///< at joint_start
+    double                          r_end   = 0.; ///< at joint_end
+    bool                            cone    = false;
+    std::vector<RoundedEnd>         rounded;
     double                          half_length    = 0.;
     double                          z_m            = 0.;
     double                          z_start        = 0.; ///< drawing

@@ -5,6 +5,7 @@
 
 #include <coaxfit/coupling/monolithic_solver.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iomanip>
@@ -28,6 +29,21 @@ namespace coaxfit
         this->scene       = &scene;
         transfer_matrix   = scene.joint_transfer().matrix();
         hub_is_point_side = scene.point_body() == scene.joint().outer;
+        // M = D^{-1} R is full, but its entries decay geometrically away
+        // from each point's faces (D is banded): those below 1e-14 of a
+        // row's largest are dropped, so that the ties stay local and the
+        // factorization sparse (all of them made every tied row couple to
+        // every joint DoF of the other body: 29 s instead of 2.3 s on a
+        // rounded bore edge's 337 points).
+        for (unsigned int i = 0; i < transfer_matrix.m(); ++i)
+          {
+            double largest = 0.;
+            for (unsigned int j = 0; j < transfer_matrix.n(); ++j)
+              largest = std::max(largest, std::abs(transfer_matrix(i, j)));
+            for (unsigned int j = 0; j < transfer_matrix.n(); ++j)
+              if (std::abs(transfer_matrix(i, j)) < 1e-14 * largest)
+                transfer_matrix(i, j) = 0.;
+          }
       }
   }
 

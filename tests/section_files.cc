@@ -314,6 +314,8 @@ main()
         "--set \"Operation/Face pressures=joint: 5\" hub_file.prm"},
        {"a face pressure without its value",
         "--set \"Operation/Face pressures=free\" hub_file.prm"},
+       {"Hub outer pressure on a file whose outer face is named",
+        "--set \"Operation/Hub outer pressure=10\" hub_file.prm"},
        {"a face pressure with plain cylinders",
         "--set \"Operation/Face pressures=free: 5\" "
           + std::string(COAXFIT_SOURCE_DIR) + "/prm/default.prm"},

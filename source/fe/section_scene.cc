@@ -245,6 +245,55 @@ namespace coaxfit
 
 
 
+  bool
+  SectionScene::has_pressure_surface(const bool shaft) const
+  {
+    const auto ids_present
+      = [](const Triangulation<2> &mesh, const types::boundary_id id) {
+          for (const auto &cell : mesh.active_cell_iterators())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() && face->boundary_id() == id)
+                return true;
+          return false;
+        };
+    if (from_file(shaft))
+      return ids_present((shaft ? shaft_file : hub_file)->mesh,
+                         shaft ? BoundaryId::bore : BoundaryId::outer);
+    const SectionOutline &outline = drawn(shaft);
+    double                r       = shaft ? 0.5 * shaft_bore : 0.;
+    if (!shaft)
+      for (const OutlineCorner &c : outline.corners())
+        r = std::max(r, 0.5 * c.diameter);
+    const double tol = 1e-9 * outline.extent();
+    for (const OutlineEdge &edge : outline.edges())
+      if (!edge.is_arc() && std::abs(edge.start[0] - r) <= tol
+          && std::abs(edge.end[0] - r) <= tol
+          && edge.start.distance(edge.end) > tol)
+        return r > 0.;
+    return false;
+  }
+
+
+
+  bool
+  SectionScene::has_free_named_face(const bool         shaft,
+                                    const std::string &name) const
+  {
+    if (!from_file(shaft))
+      return false;
+    const FileSection &file = *(shaft ? shaft_file : hub_file);
+    const auto         id   = file.names.find(name);
+    if (id == file.names.end())
+      return false;
+    for (const auto &cell : file.mesh.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id->second)
+          return true;
+    return false;
+  }
+
+
+
   std::map<std::string, types::boundary_id>
   SectionScene::face_names(const bool shaft) const
   {

@@ -6,6 +6,7 @@
 #include <coaxfit/parameters/parameters.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace coaxfit
 {
@@ -227,6 +228,34 @@ namespace coaxfit
         for (const auto &[name, id] : scene->face_names(shaft))
           if (name != "joint" && name != "axis")
             names.insert(name);
+      // A pressure must find its faces, never vanish silently.
+      for (const auto &[name, value] : p.operation.face_pressures())
+        if (names.count(name) != 0 && !scene->has_free_named_face(true, name)
+            && !scene->has_free_named_face(false, name))
+          throw InputError(
+            "parameter Operation/Face pressures names the face '" + name
+            + "', which lies on the joint (contact may spread over it, as "
+              "over a fillet at the joint's end); allowed: faces off the "
+              "joint");
+      for (const auto &[entry, value, shaft] :
+           {std::make_tuple("Operation/Hub outer pressure",
+                            p.operation.hub_outer_pressure,
+                            false),
+            std::make_tuple("Operation/Shaft bore pressure",
+                            p.operation.shaft_bore_pressure,
+                            true)})
+        if (value > 0. && !scene->has_pressure_surface(shaft))
+          throw InputError(
+            "parameter " + std::string(entry) + " = " + number(value)
+            + " MPa: the " + (shaft ? "shaft" : "hub")
+            + "'s section has no face at its " + (shaft ? "bore" : "largest")
+            + " diameter to carry it"
+            + (scene->from_file(shaft) ?
+                 " that is not named in its gmsh file (a named face takes "
+                 "Operation/Face pressures)" :
+                 " (a straight edge of constant diameter)")
+            + "; allowed: 0, or name the faces with Operation/Face "
+              "pressures");
       for (const auto &[name, value] : p.operation.face_pressures())
         if (names.count(name) == 0)
           {

@@ -80,6 +80,23 @@ namespace coaxfit
     std::map<std::string, types::boundary_id>
     face_names(bool shaft) const;
 
+    /**
+     * Whether the shaft (@p shaft: its bore) or the hub (its largest
+     * diameter) has faces that carry Operation/Shaft bore pressure or Hub
+     * outer pressure: an outline's straight edges there, a gmsh file's
+     * unnamed faces there.
+     */
+    bool
+    has_pressure_surface(bool shaft) const;
+
+    /**
+     * Whether the named face @p name of a gmsh file section (@p shaft's)
+     * is still a free face of its mesh (not taken into the joint, as a
+     * fillet over which contact may spread is).
+     */
+    bool
+    has_free_named_face(bool shaft, const std::string &name) const;
+
     /** The outline as drawn of the shaft (@p shaft) or of the hub. */
     const SectionOutline &
     drawn(bool shaft) const

@@ -54,7 +54,7 @@ namespace coaxfit
      * order) and end, whatever the cell size says. Two bodies meshed
      * with the same vertices on their joint get coinciding nodes there.
      */
-    std::vector<Point<2>> vertices;
+    std::vector<Point<2>> vertices = {};
     /**
      * Whether the mesh is refined towards both ends (false for a segment
      * that ends on a symmetry plane: give its other end as a refinement

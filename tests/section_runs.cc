@@ -306,10 +306,6 @@ main()
     {"only a hub section", "--set \"Geometry/Shaft section=\" " + gear},
     {"a plain entry with sections",
      "--set \"Geometry/Joint diameter=50\" " + gear},
-    {"a hub against a shaft shoulder (a face in the joint)",
-     "--set \"Geometry/Shaft section=-100, 0; 100, 0; 100, 70; 25, 70; "
-     "25, 50; -100, 50; -100, 0\" "
-       + gear},
     {"a taper with a diametral interference (not a push-on distance)",
      "--set \"Geometry/Shaft section=-50, 0; 50, 0; 50, 52; -50, 48; -50, 0\" "
      "--set \"Geometry/Hub section=-20, 49.2; 20, 50.8; 20, 100; -20, 100; "

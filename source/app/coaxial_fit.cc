@@ -870,6 +870,16 @@ namespace coaxfit
             << " cells, " << body.discretization->n_dofs() << " DoFs;";
     pcout << "  " << interface->n_points() << " interface points, FE_Q("
           << parameters.mesh.degree << ")\n";
+    if (parameters.sections && parameters.sections->shoulder_face())
+      {
+        const auto &face = *parameters.sections->shoulder_face();
+        pcout << "  shoulder: the sections also touch on the face at z = "
+              << face.z << " (D " << face.diameter_inner << " to "
+              << face.diameter_outer
+              << "); nothing loads the bodies along the axis, so it carries "
+                 "no force: modelled free, both held axially at the joint's "
+                 "end there\n";
+      }
     const bool converged = solve(pcout.is_active() ? &out : nullptr);
     output_results(directory);
     return converged;

@@ -255,11 +255,15 @@ namespace coaxfit
           }
         const unsigned int refinements = parameters.mesh.global_refinements;
         for (unsigned int b = 0; b < 2; ++b)
-          bodies[b].discretization->set_mesh_builder(
-            [meshes, b, refinements](Triangulation<2> &triangulation) {
-              triangulation.copy_triangulation((*meshes)[b]);
-              triangulation.refine_global(refinements);
-            });
+          {
+            bodies[b].discretization->set_mesh_builder(
+              [meshes, b, refinements](Triangulation<2> &triangulation) {
+                triangulation.copy_triangulation((*meshes)[b]);
+                triangulation.refine_global(refinements);
+              });
+            bodies[b].discretization->set_axial_pin_z(
+              parameters.sections->axial_pin_z());
+          }
       }
   }
 

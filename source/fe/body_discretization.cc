@@ -82,9 +82,9 @@ namespace coaxfit
     }
     // Without a symmetry plane or a held face (a whole section on a
     // cylinder) nothing fixes the axial rigid motion: u_z = 0 at the joint
-    // node nearest the joint's middle. A frictionless cylindrical joint
-    // passes no axial force, so this reaction is zero and the stresses do
-    // not depend on the choice.
+    // node nearest the joint's middle (or set_axial_pin_z()). A frictionless
+    // cylindrical joint passes no axial force, so this reaction is zero and the
+    // stresses do not depend on the choice.
     axial_pin = numbers::invalid_dof_index;
     if (mesh_builder && !interface_z_coordinates.empty() && !has_held_face)
       {
@@ -95,10 +95,12 @@ namespace coaxfit
                           && face->boundary_id() == BoundaryId::symmetry);
         if (!has_plane)
           {
-            const double middle = 0.5
-                                  * (interface_z_coordinates.front()
-                                     + interface_z_coordinates.back());
-            unsigned int best = 0;
+            const double middle = axial_pin_z ?
+                                    *axial_pin_z :
+                                    0.5
+                                      * (interface_z_coordinates.front()
+                                         + interface_z_coordinates.back());
+            unsigned int best   = 0;
             for (unsigned int i = 1; i < interface_z_coordinates.size(); ++i)
               if (std::abs(interface_z_coordinates[i] - middle)
                   < std::abs(interface_z_coordinates[best] - middle))

@@ -154,12 +154,25 @@ namespace coaxfit
           = std::make_unique<SectionOutline>(snapped(*hub_drawn, a, b, tol));
         pieces = merged(find_joint(*shaft_drawn, *hub_drawn), tol);
       }
+    // Faces across the axis (a hub's end face on a shaft's shoulder, a
+    // shaft's end face on a step of the bore): with a frictionless joint
+    // and no axial load they carry no force (below), so they are set
+    // aside and the joint is what remains.
+    std::vector<JointPiece> faces;
+    for (auto piece = pieces.begin(); piece != pieces.end();)
+      if (std::abs(piece->start[1] - piece->end[1]) <= tol)
+        {
+          faces.push_back(*piece);
+          piece = pieces.erase(piece);
+        }
+      else
+        ++piece;
     if (pieces.size() != 1)
-      throw InputError(both + "the sections meet in "
-                       + std::to_string(pieces.size())
-                       + " pieces; this version models a joint that is one "
-                         "cylinder or one cone (a relief groove in the bore "
-                         "or a shoulder face is not modelled yet)");
+      throw InputError(
+        both + "the sections meet in " + std::to_string(pieces.size())
+        + " pieces along the axis; this version models a joint that is one "
+          "cylinder or one cone, beside which a face across the axis may "
+          "touch (a relief groove in the bore is not modelled yet)");
     const JointPiece &joint = pieces.front();
     // A cone up to 30 degrees from the axis (tapers are 1:50 to 1:5, 0.6 to
     // 5.7 degrees); steeper joints are faces more than cones.
@@ -180,6 +193,8 @@ namespace coaxfit
     cone              = std::abs(joint.start[0] - joint.end[0]) > tol;
     const double z_lo = std::min(joint.start[1], joint.end[1]);
     const double z_hi = std::max(joint.start[1], joint.end[1]);
+    if (!faces.empty())
+      check_shoulder(faces, z_lo, z_hi, tol);
     r_start = joint.start[1] <= joint.end[1] ? joint.start[0] : joint.end[0];
     r_end   = joint.start[1] <= joint.end[1] ? joint.end[0] : joint.start[0];
     radius  = 0.5 * (r_start + r_end);
@@ -290,6 +305,43 @@ namespace coaxfit
         if (face->at_boundary() && face->boundary_id() == id->second)
           return true;
     return false;
+  }
+
+
+
+  double
+  SectionScene::axial_face_force(
+    const bool                                         shaft,
+    const std::vector<std::pair<std::string, double>> &pressures,
+    double                                            &scale) const
+  {
+    scale = 0.;
+    if (!from_file(shaft))
+      return 0.;
+    const FileSection &file = *(shaft ? shaft_file : hub_file);
+    std::map<types::boundary_id, double> by_id;
+    for (const auto &[name, p] : pressures)
+      if (const auto id = file.names.find(name); id != file.names.end())
+        by_id[id->second] = p;
+    double force = 0.;
+    for (const auto &cell : file.mesh.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          if (const auto p = by_id.find(face->boundary_id()); p != by_id.end())
+            {
+              const Point<2>     a = face->vertex(0), b = face->vertex(1);
+              const Tensor<1, 2> t = b - a;
+              // Outward: away from the cell's centre. n_z |ab| = -+dr.
+              Tensor<1, 2> n;
+              n[0] = t[1];
+              n[1] = -t[0];
+              if (n * (face->center() - cell->center()) < 0.)
+                n = -n;
+              const double ring = numbers::PI * (a[0] + b[0]); // 2 pi r_mid
+              force -= p->second * ring * n[1];
+              scale += std::abs(p->second) * ring * t.norm();
+            }
+    return force;
   }
 
 
@@ -405,6 +457,59 @@ namespace coaxfit
                        + number(covered, 6) + " mm of " + joint_text + " ("
                        + number((b - a).norm(), 6)
                        + " mm); it must cover all of it");
+  }
+
+
+
+  void
+  SectionScene::check_shoulder(const std::vector<JointPiece> &faces,
+                               const double                   z_lo,
+                               const double                   z_hi,
+                               const double                   tol)
+  {
+    const double z = faces.front().start[1];
+    if (cone)
+      throw InputError(both
+                       + "the sections also touch on the face across "
+                         "the axis at z = "
+                       + number(z, 6)
+                       + " beside a cone; a hub pushed onto a taper against "
+                         "a shoulder is not modelled (the push-on distance "
+                         "would press the face); allowed: a face beside a "
+                         "cylindrical joint");
+    double d_in  = 2. * std::min(faces.front().start[0], faces.front().end[0]);
+    double d_out = 2. * std::max(faces.front().start[0], faces.front().end[0]);
+    for (const JointPiece &face : faces)
+      {
+        if (std::abs(face.start[1] - z) > tol)
+          throw InputError(
+            both + "the sections touch on faces across the axis at z = "
+            + number(z, 6) + " and z = " + number(face.start[1], 6)
+            + ": one body would be held axially between them, and the "
+              "axial force that holds it depends on the axial strains, which "
+              "a face contact would have to take; allowed: one face beside "
+              "the joint (a hub against a shoulder)");
+        d_in  = std::min(d_in, 2. * std::min(face.start[0], face.end[0]));
+        d_out = std::max(d_out, 2. * std::max(face.start[0], face.end[0]));
+      }
+    if (z > z_lo + tol && z < z_hi - tol)
+      throw InputError(both
+                       + "the sections touch on a face across the axis "
+                         "at z = "
+                       + number(z, 6) + ", inside the joint from z = "
+                       + number(z_lo, 6) + " to " + number(z_hi, 6)
+                       + "; allowed: a face at or beyond an end of the joint");
+    shoulder = ShoulderFace{z, d_in, d_out};
+  }
+
+
+
+  double
+  SectionScene::axial_pin_z() const
+  {
+    if (shoulder)
+      return std::clamp(shoulder->z - z_m, joint_start(), joint_end());
+    return 0.5 * (joint_start() + joint_end());
   }
 
 

@@ -45,6 +45,17 @@ namespace coaxfit
               "outlines z, D in mm (drawing); model half: the half z >= 0 "
               "of the model, drawing z = model z + drawing_offset; "
               "joint_start, joint_end: model z of the joint's ends (mm)"}};
+      if (p.sections && p.sections->shoulder_face())
+        {
+          const auto &face = *p.sections->shoulder_face();
+          j["geometry"]["sections"]["shoulder_face"]
+            = {{"z", face.z},
+               {"diameter_inner", face.diameter_inner},
+               {"diameter_outer", face.diameter_outer},
+               {"modelled",
+                "free: no axial load, so the face carries no force; both "
+                "bodies held axially at the joint's end beside it"}};
+        }
       j["paper"]         = {{"beta1", g.R0 / g.R1},
                             {"beta2", g.R2 / g.R1},
                             {"l1", g.L1 / g.R1},

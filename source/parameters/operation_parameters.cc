@@ -110,7 +110,9 @@ namespace coaxfit
                       "file (both, if both have it; not joint or axis), the "
                       "traction -p n on it. Not in the DIN 7190 column (a "
                       "plain cylinder has no such faces). Allowed: 0 to 1e4 "
-                      "MPa each; empty: none.",
+                      "MPa each, with no axial resultant on either body (a "
+                      "frictionless cylindrical joint holds no axial force); "
+                      "empty: none.",
                       Patterns::Anything());
     prm.add_parameter("Joining clearance",
                       joining_clearance_text,

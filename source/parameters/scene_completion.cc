@@ -269,6 +269,32 @@ namespace coaxfit
                                             "joint and axis)") :
                                 list));
           }
+      // Nothing holds a body along a frictionless cylinder: the face
+      // pressures on each body must have no axial resultant (a taper's
+      // held faces would hold it, but loads are refused on a cone).
+      for (const bool shaft : {true, false})
+        {
+          double       scale = 0.;
+          const double force
+            = scene->axial_face_force(shaft,
+                                      p.operation.face_pressures(),
+                                      scale);
+          if (std::abs(force) > 1e-9 * scale)
+            throw InputError(
+              "parameter Operation/Face pressures: the pressures on the "
+              + std::string(shaft ? "shaft" : "hub") + "'s faces push it "
+              + (force > 0. ? "towards +z" : "towards -z") + " with "
+              + number(std::abs(force), 6)
+              + " N, and nothing holds it along the axis (a frictionless "
+                "cylindrical joint carries no axial force"
+              + (scene->shoulder_face() ?
+                   "; the face on which the sections also touch is modelled "
+                   "without contact" :
+                   "")
+              + "); allowed: pressures with no axial resultant on each body "
+                "(the same pressure on faces of equal projected area on "
+                "both sides, or faces along the axis)");
+        }
       const MeshParameters plain;
       if (p.mesh.axial_cells != plain.axial_cells
           || p.mesh.radial_cells != plain.radial_cells)

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -102,6 +103,17 @@ namespace coaxfit
     set_mesh_builder(const MeshBuilder &builder)
     {
       mesh_builder = builder;
+    }
+
+    /**
+     * For a mesh without a symmetry plane or a held face: fix the axial
+     * rigid motion at the joint node nearest model z @p z instead of the
+     * joint's middle (a hub against a shoulder: at the joint's end there).
+     */
+    void
+    set_axial_pin_z(const double z)
+    {
+      axial_pin_z = z;
     }
 
     /** The body's name as the parameter file spells it ("Shaft", "Hub"). */
@@ -425,6 +437,7 @@ namespace coaxfit
     bool                                 curved  = false;
     std::vector<double>                  load_factor;
     types::global_dof_index              axial_pin = numbers::invalid_dof_index;
+    std::optional<double>                axial_pin_z;
   };
 } // namespace coaxfit
 

@@ -3,13 +3,16 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <coaxfit/fe/section_joint.h>
 #include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/fe/section_outline.h>
 
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
@@ -34,9 +37,11 @@ namespace coaxfit
    * force: the hub is pushed on along the axis towards the cone's larger
    * diameter (Fit/Push-on distance), so its flat end face on the other
    * side is held (BoundaryId::held, u_z = 0), and the shaft is held at its
-   * flat end face on the side the hub is pushed towards. A joint of
-   * several pieces or against a shoulder face is refused with one line
-   * naming both entries; see doc/real_parts.md for what comes next.
+   * flat end face on the side the hub is pushed towards. Beside a
+   * cylindrical joint the sections may also touch on one face across the
+   * axis (a hub against a shoulder: shoulder_face()). A joint of several
+   * pieces is refused with one line naming both entries; see
+   * doc/real_parts.md for what comes next.
    *
    * Both bodies are meshed by gmsh with the same vertices on the joint
    * (joint_vertices(): graded towards its ends from the cell size, a
@@ -96,6 +101,20 @@ namespace coaxfit
      */
     bool
     has_free_named_face(bool shaft, const std::string &name) const;
+
+    /**
+     * The axial force (N, + along z) on the shaft (@p shaft) or the hub of
+     * uniform pressures @p pressures (MPa) on its named faces: minus the
+     * integral of p n_z 2 pi r over them, exact for the straight faces of
+     * the gmsh file's mesh (and for arcs: n_z ds = -+dr, whatever the
+     * curve). @p scale receives the sum of |p| 2 pi r over the same faces,
+     * the size against which the resultant is zero.
+     */
+    double
+    axial_face_force(
+      bool                                               shaft,
+      const std::vector<std::pair<std::string, double>> &pressures,
+      double                                            &scale) const;
 
     /** The outline as drawn of the shaft (@p shaft) or of the hub. */
     const SectionOutline &
@@ -171,6 +190,41 @@ namespace coaxfit
      */
     TaggedSegment
     contact_segment(bool shaft) const;
+
+    /**
+     * A face across the axis where the sections also touch, beside the
+     * joint (a hub's end face on a shaft's shoulder, a shaft's end face on
+     * a step of the bore), in the drawing's coordinates.
+     */
+    struct ShoulderFace
+    {
+      double z;              ///< its axial position (mm)
+      double diameter_inner; ///< where the touching part begins (mm)
+      double diameter_outer; ///< and ends (mm)
+    };
+
+    /**
+     * The face beside the joint where the sections touch, if any. With a
+     * frictionless cylindrical joint and no axial load, nothing pushes the
+     * bodies against each other along the axis: the face's contact
+     * pressures are non-negative and their axial resultant must vanish,
+     * so they vanish everywhere, and the face is modelled as free. Each
+     * body's axial rigid motion is fixed at its joint node nearest the
+     * face (axial_pin_z()), so the two stay together there.
+     */
+    const std::optional<ShoulderFace> &
+    shoulder_face() const
+    {
+      return shoulder;
+    }
+
+    /**
+     * Model z (mm) of the joint node at which a whole model's bodies are
+     * held axially (BodyDiscretization::set_axial_pin_z()): the joint's
+     * end at a shoulder face, otherwise the joint's middle.
+     */
+    double
+    axial_pin_z() const;
 
     /** Whether the joint is a cone (a taper fit). */
     bool
@@ -352,6 +406,18 @@ namespace coaxfit
     void
     find_rounded_ends(double tol);
 
+    /**
+     * Accept the faces across the axis @p faces where the sections touch
+     * beside the joint from @p z_lo to @p z_hi (shoulder_face()), or refuse
+     * them: beside a cone, at more than one axial position (the body held
+     * between two faces), or inside the joint's axial range.
+     */
+    void
+    check_shoulder(const std::vector<JointPiece> &faces,
+                   double                         z_lo,
+                   double                         z_hi,
+                   double                         tol);
+
     std::unique_ptr<SectionOutline> shaft_drawn, hub_drawn;
     std::unique_ptr<SectionOutline> shaft_half, hub_half;
     double                          radius  = 0.;
@@ -359,6 +425,7 @@ namespace coaxfit
     double                          r_end   = 0.; ///< at joint_end
     bool                            cone    = false;
     std::vector<RoundedEnd>         rounded;
+    std::optional<ShoulderFace>     shoulder;
     double                          half_length    = 0.;
     double                          z_m            = 0.;
     double                          z_start        = 0.; ///< drawing

@@ -48,6 +48,12 @@ SETTINGS = [("shipped", []),
             ("cell 0.125 mm", ["Mesh/Cell size=0.125"]),
             ("own nodes, hub 0.4 mm", ["Mesh/Joint nodes=own", "Mesh/Hub cell size=0.4"]),
             ("own nodes, hub 0.15 mm", ["Mesh/Joint nodes=own", "Mesh/Hub cell size=0.15"])]
+# hub_against_shoulder's hub at 0.4 mm has about as many joint nodes as its
+# shaft (97 against 89), finer in one place and coarser in another: refused
+# (the coupling would be singular); 0.25 mm is finer everywhere.
+CASE_SETTINGS = {"hub_against_shoulder": SETTINGS[:5] + [
+    ("own nodes, hub 0.25 mm", ["Mesh/Joint nodes=own", "Mesh/Hub cell size=0.25"]),
+    ("own nodes, hub 0.15 mm", ["Mesh/Joint nodes=own", "Mesh/Hub cell size=0.15"])]}
 
 
 # A section from a gmsh file against the same section written as an
@@ -101,7 +107,7 @@ def at(z, p, x):
 
 rows = []
 for case, (mean_ref, points) in REFERENCE.items():
-    for label, settings in SETTINGS:
+    for label, settings in CASE_SETTINGS.get(case, SETTINGS):
         seconds, s, z, p = run(case, settings)
         dofs = sum(s["mesh"]["dofs"].values())
         mean_error = abs(s["pressure"]["mean"] / mean_ref - 1)

@@ -141,6 +141,13 @@ main()
         "--set Mesh/Global\\ refinements=4 " + case_file,
         dir,
         5);
+  // A section from a gmsh file: the estimate counts the file's cells.
+  fault("memory (ulimit -v 1500000, a .geo hub at 3 refinements)",
+        "ulimit -v 1500000;",
+        "--set Mesh/Global\\ refinements=3 " + std::string(COAXFIT_SOURCE_DIR)
+          + "/prm/examples/rounded_gear.prm",
+        dir,
+        16);
   const std::string slow = "--set Mesh/Global\\ refinements=3 " + case_file;
   fault("SIGTERM once the run has started",
         "",

@@ -2,6 +2,7 @@
 #include <coaxfit/app/resources.h>
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/mesh.h>
+#include <coaxfit/fe/section_scene.h>
 
 #include <cmath>
 #include <fstream>
@@ -25,6 +26,14 @@ namespace coaxfit
         if (line.rfind(name + ":", 0) == 0)
           return 1024. * std::stod(line.substr(name.size() + 1));
       return std::numeric_limits<double>::infinity();
+    }
+
+    /** A section's gmsh file mesh as read, or nullptr. */
+    const Triangulation<2> *
+    file_mesh(const Parameters &parameters, const bool shaft)
+    {
+      return parameters.sections ? parameters.sections->file_mesh(shaft) :
+                                   nullptr;
     }
 
     std::string
@@ -91,16 +100,43 @@ namespace coaxfit
       const unsigned int degree = parameters.mesh.degree;
       std::size_t        dofs   = 0;
       for (const std::string &name : Scene::body_names(parameters))
-        dofs += predicted_dofs(body_geometry(parameters, name), degree);
+        {
+          const Triangulation<2> *file = file_mesh(parameters, name == "Shaft");
+          // A gmsh file's mesh: its cells, 4 per refinement, with about
+          // degree^2 nodes of two components each.
+          dofs += file ?
+                    static_cast<std::size_t>(
+                      2. * degree * degree * file->n_active_cells()
+                      * std::pow(4., parameters.mesh.global_refinements)) :
+                    predicted_dofs(body_geometry(parameters, name), degree);
+        }
       return dofs;
     }
 
-    /** The interface points: the hub's points along its bore. */
+    /**
+     * The interface points: the hub's points along its bore (the larger
+     * of the two sides' when a section is a gmsh file: the finer side
+     * carries the other).
+     */
     double
     interface_points(const Parameters &parameters)
     {
-      return predicted_axial_points(body_geometry(parameters, "Hub"),
-                                    parameters.mesh.degree);
+      double points = predicted_axial_points(body_geometry(parameters, "Hub"),
+                                             parameters.mesh.degree);
+      for (const bool shaft : {true, false})
+        if (const Triangulation<2> *file = file_mesh(parameters, shaft))
+          {
+            std::size_t faces = 0;
+            for (const auto &face : file->active_face_iterators())
+              faces += face->at_boundary()
+                       && face->boundary_id() == BoundaryId::joint;
+            points
+              = std::max(points,
+                         faces * parameters.mesh.degree
+                             * std::pow(2., parameters.mesh.global_refinements)
+                           + 1.);
+          }
+      return points;
     }
   } // namespace
 
@@ -128,7 +164,9 @@ namespace coaxfit
   bool
   use_amg(const Parameters &parameters)
   {
-    if (parameters.solver.method == SolverMethod::monolithic)
+    // Meshes of their own couple through the condensed operator only.
+    if (parameters.solver.method == SolverMethod::monolithic
+        || (parameters.sections && !parameters.mesh.shared_joint_nodes))
       return false;
     switch (parameters.solver.linear_solver)
       {
@@ -178,8 +216,11 @@ namespace coaxfit
       + std::to_string(static_cast<std::size_t>(interface_points(parameters)))
       + " interface points; with " + solver + " it needs about "
       + gigabytes(needed) + " of memory, more than " + where
-      + "; use fewer Global refinements or Axial/Radial cells (the memory "
-        "of the staggered solver's factors grows with the square of the "
-        "interface points)");
+      + "; use fewer Global refinements or "
+      + (parameters.sections ? "a larger Mesh/Cell size (or coarser sizes in "
+                               "the gmsh file)" :
+                               "Axial/Radial cells")
+      + " (the memory of the staggered solver's factors grows with the "
+        "square of the interface points)");
   }
 } // namespace coaxfit

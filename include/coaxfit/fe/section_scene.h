@@ -116,6 +116,18 @@ namespace coaxfit
       const std::vector<std::pair<std::string, double>> &pressures,
       double                                            &scale) const;
 
+    /**
+     * The gmsh file's mesh of the shaft (@p shaft) or of the hub as read
+     * (before Mesh/Global refinements), or nullptr for an outline: what
+     * the memory estimate of a run counts (cells, joint faces).
+     */
+    const Triangulation<2> *
+    file_mesh(const bool shaft) const
+    {
+      return from_file(shaft) ? &(shaft ? shaft_file : hub_file)->mesh :
+                                nullptr;
+    }
+
     /** The outline as drawn of the shaft (@p shaft) or of the hub. */
     const SectionOutline &
     drawn(bool shaft) const

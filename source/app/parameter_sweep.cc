@@ -9,6 +9,7 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/io/result_writers.h>
+#include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/parameters.h>
 
 #include <cmath>
@@ -49,15 +50,6 @@ namespace coaxfit
       return text.size() > 60 ? text.substr(0, 57) + "..." : text;
     }
 
-    std::string
-    trim(const std::string &text)
-    {
-      const auto first = text.find_first_not_of(" \t");
-      if (first == std::string::npos)
-        return "";
-      return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-    }
-
     /** A file name for a value: letters, digits and . + - = only. */
     std::string
     directory_name(const unsigned int index, const std::string &value)
@@ -86,19 +78,20 @@ namespace coaxfit
                          "Section/Name=from:to:count");
     SweepSpec         spec;
     const std::string list = argument.substr(eq + 1);
-    spec.entry             = trim(argument.substr(0, eq));
+    spec.entry             = trimmed(argument.substr(0, eq));
     const auto colon       = list.find(':');
     if (colon != std::string::npos && list.find(',') == std::string::npos)
       {
         const auto        second = list.find(':', colon + 1);
         const std::string n
-          = second == std::string::npos ? "" : trim(list.substr(second + 1));
+          = second == std::string::npos ? "" : trimmed(list.substr(second + 1));
         double     from = 0., to = 0., count = 0.;
         const bool ok
           = second != std::string::npos && !n.empty() && n.size() <= 4
             && n.find_first_not_of("0123456789") == std::string::npos
-            && to_number(trim(list.substr(0, colon)), from)
-            && to_number(trim(list.substr(colon + 1, second - colon - 1)), to)
+            && to_number(trimmed(list.substr(0, colon)), from)
+            && to_number(trimmed(list.substr(colon + 1, second - colon - 1)),
+                         to)
             && to_number(n, count);
         if (!ok || count < 2 || count > 1000)
           throw InputError("--sweep " + shown(argument)
@@ -118,7 +111,7 @@ namespace coaxfit
       {
         std::istringstream s(list);
         for (std::string value; std::getline(s, value, ',');)
-          spec.values.push_back(trim(value));
+          spec.values.push_back(trimmed(value));
         if (!list.empty() && list.back() == ',')
           spec.values.emplace_back();
         for (const std::string &value : spec.values)

@@ -183,11 +183,9 @@ namespace coaxfit
   bool
   is_section_file_name(const std::string &text)
   {
-    const auto first = text.find_first_not_of(" \t");
-    const auto last  = text.find_last_not_of(" \t");
-    if (first == std::string::npos || text.find(';') != std::string::npos)
+    std::string word = trimmed(text);
+    if (word.empty() || text.find(';') != std::string::npos)
       return false;
-    std::string word = text.substr(first, last - first + 1);
     if (word.size() < 5)
       return false;
     std::transform(word.begin(),

@@ -126,12 +126,8 @@ namespace coaxfit
         std::unique_ptr<SectionOutline> &outline
           = shaft ? shaft_drawn : hub_drawn;
         if (is_section_file_name(text))
-          {
-            const auto first = text.find_first_not_of(" \t");
-            const auto last  = text.find_last_not_of(" \t");
-            (shaft ? shaft_file : hub_file)
-              = read_file(text.substr(first, last - first + 1), entry, outline);
-          }
+          (shaft ? shaft_file : hub_file)
+            = read_file(trimmed(text), entry, outline);
         else
           outline = std::make_unique<SectionOutline>(
             SectionOutline::parse(text, entry));

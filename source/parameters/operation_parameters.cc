@@ -173,12 +173,6 @@ namespace coaxfit
     std::vector<std::pair<std::string, double>> result;
     std::istringstream                          items(face_pressures_text);
     std::string                                 item;
-    const auto trimmed = [](const std::string &text) {
-      const auto first = text.find_first_not_of(" \t");
-      const auto last  = text.find_last_not_of(" \t");
-      return first == std::string::npos ? std::string() :
-                                          text.substr(first, last - first + 1);
-    };
     while (std::getline(items, item, ';'))
       {
         if (trimmed(item).empty())

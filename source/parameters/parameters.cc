@@ -1339,11 +1339,8 @@ namespace coaxfit
           {"Hub section", &parameters.drawing.hub_section}})
       if (is_section_file_name(*text))
         {
-          const auto                  first = text->find_first_not_of(" \t");
-          const auto                  last  = text->find_last_not_of(" \t");
-          const std::filesystem::path given
-            = text->substr(first, last - first + 1);
-          const std::string resolved
+          const std::filesystem::path given = trimmed(*text);
+          const std::string           resolved
             = std::filesystem::absolute(
                 given.is_absolute() ?
                   given :

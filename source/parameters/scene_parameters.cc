@@ -361,11 +361,7 @@ namespace coaxfit
   DesignParameters::resolve_friction(const MaterialFamily shaft,
                                      const MaterialFamily hub)
   {
-    const auto        first = friction_text.find_first_not_of(" \t");
-    const auto        last  = friction_text.find_last_not_of(" \t");
-    const std::string text  = first == std::string::npos ?
-                                "" :
-                                friction_text.substr(first, last + 1 - first);
+    const std::string text = trimmed(friction_text);
     if (text == "auto")
       {
         const FrictionValue value = din7190_friction(shaft, hub, joining);

@@ -28,6 +28,16 @@ namespace coaxfit
       }
   }
 
+  /** @p text without leading and trailing blanks and tabs. */
+  inline std::string
+  trimmed(const std::string &text)
+  {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos)
+      return "";
+    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+  }
+
   /** @p x with @p precision significant digits, for messages. */
   inline std::string
   number(const double x, const int precision = 10)

@@ -130,10 +130,6 @@ namespace
     // sigma_r(r) = (lambda + 2 mu) u' + lambda u / r for u = C1 r + C2/r -
     // k r^3: 2 (lambda + mu) C1 - 2 mu C2 / r^2 - (3 lambda + 6 mu + lambda)
     // k r^2.
-    const auto s_r = [&](double C1, double C2, double r) {
-      return 2. * (lambda + mu) * C1 - 2. * mu * C2 / (r * r)
-             - (4. * lambda + 6. * mu) * k * r * r;
-    };
     double C1, C2;
     if (a == 0.)
       {

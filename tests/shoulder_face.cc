@@ -11,7 +11,8 @@
 //    Poisson expansion nu p R / E takes that much off the radial
 //    interference: Lame's pressure of the smaller interference, exact. On
 //    one end face alone they would push the hub along a frictionless
-//    cylinder that cannot hold it: refused.
+//    cylinder that cannot hold it: refused; so is a pressure on a face
+//    that lies on the shoulder.
 // 3. Bad scenes: a hub held between a shoulder and a collar, a taper
 //    against a shoulder.
 #include "run_summary.h"
@@ -177,6 +178,25 @@ main()
            "  set Global refinements = 1\n"
            "end\n";
   }
+  {
+    // The example's hub as a .geo with named faces, against the shoulder.
+    std::ofstream geo("shoulder_hub.geo");
+    geo << "Point(1) = {25, -20, 0, 0.5};\nPoint(2) = {25, 28.5, 0, 0.5};\n"
+           "Point(3) = {26.5, 30, 0, 0.5};\nPoint(4) = {50, 30, 0, 3};\n"
+           "Point(5) = {50, -20, 0, 3};\n"
+           "Line(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\n"
+           "Line(4) = {4, 5};\nLine(5) = {5, 1};\n"
+           "Curve Loop(1) = {1:5};\nPlane Surface(1) = {1};\n"
+           "Recombine Surface{1};\n"
+           "Physical Curve(\"joint\") = {1};\n"
+           "Physical Curve(\"chamfer\") = {2};\n"
+           "Physical Curve(\"right\") = {3};\n"
+           "Physical Curve(\"left\") = {5};\n"
+           "Physical Surface(\"hub\") = {1};\n";
+  }
+  const std::string shoulder_hub
+    = "--set \"Geometry/Hub section="
+      + (std::filesystem::current_path() / "shoulder_hub.geo").string() + "\" ";
   const std::string plain_hub
     = (std::filesystem::current_path() / "plain_hub.prm").string();
   const Result both_ends
@@ -201,6 +221,9 @@ main()
   const std::vector<std::pair<std::string, std::string>> bad
     = {{"10 MPa on one end face",
         "--set \"Operation/Face pressures=left: 10\" " + plain_hub},
+       {"10 MPa on the faces of a .geo hub, one of them on the shoulder",
+        "--set \"Operation/Face pressures=left: 10; right: 10; chamfer: 10\" "
+          + shoulder_hub + example},
        {"a hub between a shoulder and a collar",
         "--set \"Geometry/Shaft section=-100, 0; 100, 0; 100, 70; 30, 70; 30, "
         "50; -20, 50; -20, 60; -100, 60; -100, 0\" --set \"Geometry/Hub "

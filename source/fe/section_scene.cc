@@ -342,6 +342,34 @@ namespace coaxfit
 
 
 
+  bool
+  SectionScene::named_face_on_shoulder(const bool         shaft,
+                                       const std::string &name) const
+  {
+    if (!shoulder || !from_file(shaft))
+      return false;
+    const FileSection &file = *(shaft ? shaft_file : hub_file);
+    const auto         id   = file.names.find(name);
+    if (id == file.names.end())
+      return false;
+    const double tol = 1e-6 * drawn(shaft).extent();
+    const double r0  = 0.5 * shoulder->diameter_inner,
+                 r1  = 0.5 * shoulder->diameter_outer;
+    for (const auto &cell : file.mesh.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id->second
+            && std::abs(face->vertex(0)[1] - shoulder->z) <= tol
+            && std::abs(face->vertex(1)[1] - shoulder->z) <= tol
+            && std::min(r1, std::max(face->vertex(0)[0], face->vertex(1)[0]))
+                   - std::max(r0,
+                              std::min(face->vertex(0)[0], face->vertex(1)[0]))
+                 > tol)
+          return true;
+    return false;
+  }
+
+
+
   std::map<std::string, types::boundary_id>
   SectionScene::face_names(const bool shaft) const
   {

@@ -257,7 +257,14 @@ namespace coaxfit
             + "; allowed: 0, or name the faces with Operation/Face "
               "pressures");
       for (const auto &[name, value] : p.operation.face_pressures())
-        if (names.count(name) == 0)
+        if (name == "joint" || name == "axis")
+          throw InputError(
+            "parameter Operation/Face pressures names the face '" + name
+            + "', which carries "
+            + (name == "joint" ? "the contact" : "the axis")
+            + " and takes no pressure of operation; allowed: the other named "
+              "faces of a section's gmsh file");
+        else if (names.count(name) == 0)
           {
             std::string list;
             for (const std::string &n : names)
@@ -269,6 +276,17 @@ namespace coaxfit
                                             "joint and axis)") :
                                 list));
           }
+      // A face where the sections touch beside the joint is modelled
+      // free: a pressure there would act where the other body is.
+      for (const auto &[name, value] : p.operation.face_pressures())
+        for (const bool shaft : {true, false})
+          if (scene->named_face_on_shoulder(shaft, name))
+            throw InputError(
+              "parameter Operation/Face pressures names the face '" + name
+              + "', part of which lies on the other section at the face "
+                "where they touch (z = "
+              + number(scene->shoulder_face()->z, 6)
+              + "); allowed: faces where the section is free");
       // Nothing holds a body along a frictionless cylinder: the face
       // pressures on each body must have no axial resultant (a taper's
       // held faces would hold it, but loads are refused on a cone).
@@ -279,7 +297,9 @@ namespace coaxfit
             = scene->axial_face_force(shaft,
                                       p.operation.face_pressures(),
                                       scale);
-          if (std::abs(force) > 1e-9 * scale)
+          // Pressures rounded by a user balance to about 1e-7 of their
+          // load; what is left is held by the axial pin, below 1e-6.
+          if (std::abs(force) > 1e-6 * scale)
             throw InputError(
               "parameter Operation/Face pressures: the pressures on the "
               + std::string(shaft ? "shaft" : "hub") + "'s faces push it "

@@ -117,6 +117,15 @@ namespace coaxfit
       double                                            &scale) const;
 
     /**
+     * Whether a face named @p name of the shaft's (@p shaft) or the hub's
+     * gmsh file lies in part on shoulder_face() (where the sections touch
+     * beside the joint; a face of the file's mesh that overlaps the
+     * touching ring by more than the drawing tolerance).
+     */
+    bool
+    named_face_on_shoulder(bool shaft, const std::string &name) const;
+
+    /**
      * The gmsh file's mesh of the shaft (@p shaft) or of the hub as read
      * (before Mesh/Global refinements), or nullptr for an outline: what
      * the memory estimate of a run counts (cells, joint faces).

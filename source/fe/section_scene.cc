@@ -97,7 +97,50 @@ namespace coaxfit
         }
       return {lo, hi};
     }
+    /**
+     * Whether @p mesh has a boundary face with id @p id for which
+     * @p accept (the face) holds.
+     */
+    template <typename Predicate>
+    bool
+    any_boundary_face(const Triangulation<2>  &mesh,
+                      const types::boundary_id id,
+                      const Predicate         &accept)
+    {
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == id && accept(face))
+            return true;
+      return false;
+    }
   } // namespace
+
+
+
+  double
+  SectionScene::pressure_radius(const bool shaft) const
+  {
+    if (shaft)
+      return 0.5 * shaft_bore;
+    double r = 0.;
+    for (const OutlineCorner &c : drawn(false).corners())
+      r = std::max(r, 0.5 * c.diameter);
+    return r;
+  }
+
+
+
+  std::optional<types::boundary_id>
+  SectionScene::named_id(const bool shaft, const std::string &name) const
+  {
+    if (!from_file(shaft))
+      return std::nullopt;
+    const auto &names = (shaft ? shaft_file : hub_file)->names;
+    const auto  id    = names.find(name);
+    if (id == names.end())
+      return std::nullopt;
+    return id->second;
+  }
 
 
 
@@ -238,14 +281,10 @@ namespace coaxfit
   void
   SectionScene::tag_surfaces(Triangulation<2> &mesh, const bool shaft) const
   {
-    const SectionOutline &outline = drawn(shaft);
-    double                r       = shaft ? 0.5 * shaft_bore : 0.;
-    if (!shaft)
-      for (const OutlineCorner &c : outline.corners())
-        r = std::max(r, 0.5 * c.diameter);
+    const double r = pressure_radius(shaft);
     if (r <= 0.)
       return; // a solid shaft has no bore
-    const double tol = 1e-9 * outline.extent();
+    const double tol = 1e-9 * drawn(shaft).extent();
     for (const auto &cell : mesh.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == SectionId::free
@@ -259,23 +298,13 @@ namespace coaxfit
   bool
   SectionScene::has_pressure_surface(const bool shaft) const
   {
-    const auto ids_present
-      = [](const Triangulation<2> &mesh, const types::boundary_id id) {
-          for (const auto &cell : mesh.active_cell_iterators())
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() && face->boundary_id() == id)
-                return true;
-          return false;
-        };
     if (from_file(shaft))
-      return ids_present((shaft ? shaft_file : hub_file)->mesh,
-                         shaft ? BoundaryId::bore : BoundaryId::outer);
+      return any_boundary_face((shaft ? shaft_file : hub_file)->mesh,
+                               shaft ? BoundaryId::bore : BoundaryId::outer,
+                               [](const auto &) { return true; });
     const SectionOutline &outline = drawn(shaft);
-    double                r       = shaft ? 0.5 * shaft_bore : 0.;
-    if (!shaft)
-      for (const OutlineCorner &c : outline.corners())
-        r = std::max(r, 0.5 * c.diameter);
-    const double tol = 1e-9 * outline.extent();
+    const double          r       = pressure_radius(shaft);
+    const double          tol     = 1e-9 * outline.extent();
     for (const OutlineEdge &edge : outline.edges())
       if (!edge.is_arc() && std::abs(edge.start[0] - r) <= tol
           && std::abs(edge.end[0] - r) <= tol
@@ -290,17 +319,11 @@ namespace coaxfit
   SectionScene::has_free_named_face(const bool         shaft,
                                     const std::string &name) const
   {
-    if (!from_file(shaft))
-      return false;
-    const FileSection &file = *(shaft ? shaft_file : hub_file);
-    const auto         id   = file.names.find(name);
-    if (id == file.names.end())
-      return false;
-    for (const auto &cell : file.mesh.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == id->second)
-          return true;
-    return false;
+    const auto id = named_id(shaft, name);
+    return id
+           && any_boundary_face((shaft ? shaft_file : hub_file)->mesh,
+                                *id,
+                                [](const auto &) { return true; });
   }
 
 
@@ -317,25 +340,22 @@ namespace coaxfit
     const FileSection &file = *(shaft ? shaft_file : hub_file);
     std::map<types::boundary_id, double> by_id;
     for (const auto &[name, p] : pressures)
-      if (const auto id = file.names.find(name); id != file.names.end())
-        by_id[id->second] = p;
+      if (const auto id = named_id(shaft, name))
+        by_id[*id] = p;
     double force = 0.;
     for (const auto &cell : file.mesh.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary())
-          if (const auto p = by_id.find(face->boundary_id()); p != by_id.end())
+      for (unsigned int f = 0; f < GeometryInfo<2>::faces_per_cell; ++f)
+        if (cell->face(f)->at_boundary())
+          if (const auto p = by_id.find(cell->face(f)->boundary_id());
+              p != by_id.end())
             {
-              const Point<2>     a = face->vertex(0), b = face->vertex(1);
-              const Tensor<1, 2> t = b - a;
-              // Outward: away from the cell's centre. n_z |ab| = -+dr.
-              Tensor<1, 2> n;
-              n[0] = t[1];
-              n[1] = -t[0];
-              if (n * (face->center() - cell->center()) < 0.)
-                n = -n;
-              const double ring = numbers::PI * (a[0] + b[0]); // 2 pi r_mid
-              force -= p->second * ring * n[1];
-              scale += std::abs(p->second) * ring * t.norm();
+              const Point<2> a = cell->face(f)->vertex(0),
+                             b = cell->face(f)->vertex(1);
+              // 2 pi r_mid |ab|; n_z |ab| = -+dr, exact for any curve.
+              const double ring   = numbers::PI * (a[0] + b[0]);
+              const double length = a.distance(b);
+              force -= p->second * ring * length * outward_normal(cell, f)[1];
+              scale += std::abs(p->second) * ring * length;
             }
     return force;
   }
@@ -346,26 +366,21 @@ namespace coaxfit
   SectionScene::named_face_on_shoulder(const bool         shaft,
                                        const std::string &name) const
   {
-    if (!shoulder || !from_file(shaft))
-      return false;
-    const FileSection &file = *(shaft ? shaft_file : hub_file);
-    const auto         id   = file.names.find(name);
-    if (id == file.names.end())
+    const auto id = named_id(shaft, name);
+    if (!shoulder || !id)
       return false;
     const double tol = 1e-6 * drawn(shaft).extent();
     const double r0  = 0.5 * shoulder->diameter_inner,
                  r1  = 0.5 * shoulder->diameter_outer;
-    for (const auto &cell : file.mesh.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == id->second
-            && std::abs(face->vertex(0)[1] - shoulder->z) <= tol
-            && std::abs(face->vertex(1)[1] - shoulder->z) <= tol
-            && std::min(r1, std::max(face->vertex(0)[0], face->vertex(1)[0]))
-                   - std::max(r0,
-                              std::min(face->vertex(0)[0], face->vertex(1)[0]))
-                 > tol)
-          return true;
-    return false;
+    return any_boundary_face(
+      (shaft ? shaft_file : hub_file)->mesh, *id, [&](const auto &face) {
+        const Point<2> a = face->vertex(0), b = face->vertex(1);
+        return std::abs(a[1] - shoulder->z) <= tol
+               && std::abs(b[1] - shoulder->z) <= tol
+               && std::min(r1, std::max(a[0], b[0]))
+                      - std::max(r0, std::min(a[0], b[0]))
+                    > tol;
+      });
   }
 
 

@@ -428,6 +428,17 @@ namespace coaxfit
     find_rounded_ends(double tol);
 
     /**
+     * The radius at which a pressure of operation acts on a section: the
+     * shaft's bore (0: solid) or the hub's largest.
+     */
+    double
+    pressure_radius(bool shaft) const;
+
+    /** The boundary id of the face @p name of a gmsh file's section. */
+    std::optional<types::boundary_id>
+    named_id(bool shaft, const std::string &name) const;
+
+    /**
      * Accept the faces across the axis @p faces where the sections touch
      * beside the joint from @p z_lo to @p z_hi (shoulder_face()), or refuse
      * them: beside a cone, at more than one axial position (the body held

@@ -33,6 +33,7 @@
 // to 80 mm +121/+102) 72 to 121 um. The aluminium hub's band (U_min 0.1224
 // to U_max 0.178 mm, 56 um) holds no ISO fit of 50 mm: the run says so.
 #include "run_executable.h"
+#include "run_summary.h"
 
 #include <cmath>
 #include <filesystem>
@@ -48,24 +49,9 @@ namespace
                             "\"Output/Write plots=false\" --set "
                             "\"Output/Print timing=false\" ";
 
-  nlohmann::json
-  summary(const std::string &directory)
-  {
-    std::ifstream in(directory + "/summary.json");
-    return nlohmann::json::parse(in);
-  }
+  using coaxfit_test::read_summary;
 
-  /** "agrees" within @p tolerance (relative), else the deviation. */
-  std::string
-  compare(const double value, const double expected, const double tolerance)
-  {
-    const double deviation = std::abs(value / expected - 1.);
-    if (deviation <= tolerance)
-      return "agrees";
-    std::ostringstream s;
-    s << "DIFFERS by " << std::setprecision(3) << 100. * deviation << " %";
-    return s.str();
-  }
+  using coaxfit_test::agreement;
 
   /**
    * The safety of the criterion @p criterion in state @p state from the
@@ -96,14 +82,16 @@ namespace
     const coaxfit_test::RunResult r
       = coaxfit_test::run_coaxfit(dir,
                                   "--set Design/Mode=select" + quiet + file);
-    const nlohmann::json s = summary(dir)["selection"];
+    const nlohmann::json s = read_summary(dir)["selection"];
     std::cout << name << " (exit code " << r.exit_code << "):\n"
               << std::setprecision(6) << "  U_min_din "
               << s["U_min_din"].get<double>() << " mm, by hand " << U_min_din
-              << ": " << compare(s["U_min_din"].get<double>(), U_min_din, 1e-5)
+              << ": "
+              << agreement(s["U_min_din"].get<double>(), U_min_din, 1e-5)
               << "\n  U_max_din " << s["U_max_din"].get<double>()
               << " mm, by hand " << U_max_din << ": "
-              << compare(s["U_max_din"].get<double>(), U_max_din, 1e-5) << '\n';
+              << agreement(s["U_max_din"].get<double>(), U_max_din, 1e-5)
+              << '\n';
     for (const std::string end : {"U_min", "U_max"})
       {
         const double          U         = s[end].get<double>();
@@ -119,12 +107,12 @@ namespace
           "--set \"Fit/ISO fit=\" --set Fit/Case=mean --set \"Fit/Diametral "
           "interference="
             + interference.str() + "\"" + quiet + file);
-        const double S = safety(summary(check_dir), criterion, state);
+        const double S = safety(read_summary(check_dir), criterion, state);
         std::cout << "  " << end << " (FE) " << std::setprecision(5) << U
                   << " mm, governed by " << criterion << " " << state
                   << "; in check mode there (exit code " << c.exit_code
                   << ") its safety " << std::setprecision(4) << S
-                  << ", required 1: " << compare(S, 1., 5e-3) << '\n';
+                  << ", required 1: " << agreement(S, 1., 5e-3) << '\n';
       }
     std::cout << "  fits: " << s["fits"].size();
     if (!s["fits"].empty())

@@ -18,6 +18,28 @@
 
 namespace coaxfit_test
 {
+  /** summary.json of the run in @p directory (null if there is none). */
+  inline nlohmann::json
+  read_summary(const std::string &directory)
+  {
+    std::ifstream in(directory + "/summary.json");
+    if (!in)
+      return nlohmann::json();
+    return nlohmann::json::parse(in);
+  }
+
+  /** "agrees" within @p tolerance (relative), else the deviation. */
+  inline std::string
+  agreement(const double value, const double expected, const double tolerance)
+  {
+    const double deviation = std::abs(value / expected - 1.);
+    if (deviation <= tolerance)
+      return "agrees";
+    std::ostringstream s;
+    s << "DIFFERS by " << std::setprecision(3) << 100. * deviation << " %";
+    return s.str();
+  }
+
   /**
    * The Fit and Material subsections of a test scene: U = 0.05 mm, a steel
    * shaft (E 210000 MPa, nu 0.3) and a hub of @p E_hub (MPa) and @p nu_hub.

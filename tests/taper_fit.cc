@@ -190,9 +190,6 @@ main()
         "--set \"Fit/ISO fit=H7/s6\" " + taper},
        {"a push-on distance beyond the linear range",
         "--set \"Fit/Push-on distance=100\" " + taper},
-       {"choosing the fit of a taper",
-        "--set Design/Mode=select --set \"Design/Required torque=100\" "
-          + taper},
        {"a hub with no flat face where it is pushed",
         "--set \"Geometry/Hub section=5, 45.5; 45, 49.5; 45, 100; 10, 100; "
         "5, 45.5\" "

@@ -192,8 +192,11 @@ namespace coaxfit
 
     // The console: one line per figure, one column per case.
     std::ostringstream table;
-    table << "coaxfit: fit " << parameters.fit_limits.iso_fit
-          << " at D_F = " << 2. * parameters.geometry.R1
+    // An ISO fit, or a taper's push-on distances.
+    const std::string what = parameters.fit_limits.iso_fit.empty() ?
+                               parameters.fit_limits.source :
+                               "fit " + parameters.fit_limits.iso_fit;
+    table << "coaxfit: " << what << " at D_F = " << 2. * parameters.geometry.R1
           << " mm, cases min, mean, max\n"
           << "    " << std::left << std::setw(28) << "" << std::right;
     for (const Row &row : rows)
@@ -219,7 +222,7 @@ namespace coaxfit
 
     const std::string report_name = directory + "/report.md";
     std::ofstream     report      = open_result_file(report_name);
-    report << "# coaxfit report: fit " << parameters.fit_limits.iso_fit
+    report << "# coaxfit report: " << what
            << " at D_F = " << 2. * parameters.geometry.R1
            << " mm, cases min, mean, max\n\n## Verdict\n\n"
            << verdict_line() << "\n\n"

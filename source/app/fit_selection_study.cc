@@ -6,9 +6,11 @@
 #include <coaxfit/design/fit_selection.h>
 #include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/design/verdict.h>
+#include <coaxfit/fe/section_scene.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/io/result_writers.h>
 #include <coaxfit/io/selection_writers.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <cmath>
 #include <fstream>
@@ -42,6 +44,31 @@ namespace coaxfit
     p.used_prm = replace_prm_line(p.used_prm, "ISO fit", fit);
     p.used_prm = replace_prm_line(p.used_prm, "Case", "all");
     p.used_prm = replace_prm_line(p.used_prm, "Diametral interference", "");
+    return p;
+  }
+
+
+
+  Parameters
+  FitSelectionStudy::checking_push_on(const Parameters &parameters,
+                                      const double      U_min,
+                                      const double      U_max)
+  {
+    Parameters p        = parameters;
+    p.design.mode       = DesignMode::check;
+    p.fit.iso_fit       = "";
+    p.fit.fit_case      = FitCase::all;
+    const double C      = p.sections->taper();
+    p.fit_limits.U_min  = U_min;
+    p.fit_limits.U_max  = U_max;
+    p.fit_limits.source = "push-on distances " + number(U_min / C, 6) + " to "
+                          + number(U_max / C, 6) + " mm";
+    p.fit_limits.fit_case  = FitCase::mean;
+    p.geometry.d           = 0.5 * p.fit_limits.effective();
+    p.fit.push_on_distance = p.fit_limits.used() / C;
+    // Each case's parameters.prm (Parameters::for_fit_case) gives its
+    // push-on distance and Case = mean.
+    p.used_prm = replace_prm_line(p.used_prm, "Mode", "check");
     return p;
   }
 
@@ -98,11 +125,29 @@ namespace coaxfit
     Verdict     verdict = Verdict::no_fit(selection.conflict());
     if (selection.found())
       {
-        first_fit = selection.fits.front().name;
-        if (verbose)
-          out << "coaxfit: the first fit, " << first_fit
-              << ", checked as with Fit/Case = all\n";
-        FitCaseStudy study(checking(parameters, first_fit), out, verbose);
+        // The first fit, or a taper's band of push-on distances, checked
+        // as with Fit/Case = all.
+        Parameters checked;
+        if (selection.taper_fit())
+          {
+            checked = checking_push_on(parameters,
+                                       selection.least.U,
+                                       selection.largest.U);
+            if (verbose)
+              out << "coaxfit: the push-on distances from "
+                  << number(selection.push_on(selection.least.U), 6) << " to "
+                  << number(selection.push_on(selection.largest.U), 6)
+                  << " mm, checked at both ends and the middle\n";
+          }
+        else
+          {
+            first_fit = selection.fits.front().name;
+            checked   = checking(parameters, first_fit);
+            if (verbose)
+              out << "coaxfit: the first fit, " << first_fit
+                  << ", checked as with Fit/Case = all\n";
+          }
+        FitCaseStudy study(checked, out, verbose);
         study.set_report_section(section.str());
         converged = study.run_in(staging);
         verdict.failed.clear();

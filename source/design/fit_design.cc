@@ -57,6 +57,17 @@ namespace coaxfit
 
 
 
+  double
+  FitDesign::holding_force(const double N, const double mu, const double taper)
+  {
+    const double tan_beta = 0.5 * taper;
+    const double cos_beta = 1. / std::sqrt(1. + tan_beta * tan_beta);
+    const double sin_beta = tan_beta * cos_beta;
+    return std::max(0., N * (mu * cos_beta - sin_beta));
+  }
+
+
+
   void
   FitDesign::compute_capacity(const Parameters &parameters, const Din7190 &din)
   {
@@ -76,18 +87,17 @@ namespace coaxfit
         // p pi D_F l_F / cos), its axial part N sin against pushing on,
         // friction mu N cos along the cone. Held against pulling off by
         // N (mu cos - sin): none unless mu > tan(beta) (self-locking).
-        const double mu_e  = design.press_in_friction_coefficient;
-        const double N_din = din.axial_force(pressure_din, 1.) / cone_cos;
-        push_on_force      = normal_force * cone_sin;
-        push_on_force_din  = N_din * cone_sin;
-        press_in_force     = normal_force * (cone_sin + mu_e * cone_cos);
-        press_in_force_din = N_din * (cone_sin + mu_e * cone_cos);
-        axial_force_capacity
-          = std::max(0., normal_force * (mu * cone_cos - cone_sin));
-        axial_force_capacity_din
-          = std::max(0., N_din * (mu * cone_cos - cone_sin));
-        torque_capacity     = 1e-3 * mu * R_F * normal_force;
-        torque_capacity_din = 1e-3 * mu * R_F * N_din;
+        const double mu_e        = design.press_in_friction_coefficient;
+        const double N_din       = din.axial_force(pressure_din, 1.) / cone_cos;
+        push_on_force            = normal_force * cone_sin;
+        push_on_force_din        = N_din * cone_sin;
+        press_in_force           = normal_force * (cone_sin + mu_e * cone_cos);
+        press_in_force_din       = N_din * (cone_sin + mu_e * cone_cos);
+        const double taper       = parameters.sections->taper();
+        axial_force_capacity     = holding_force(normal_force, mu, taper);
+        axial_force_capacity_din = holding_force(N_din, mu, taper);
+        torque_capacity          = 1e-3 * mu * R_F * normal_force;
+        torque_capacity_din      = 1e-3 * mu * R_F * N_din;
       }
 
     // DIN 7190's resultant of a torque and an axial force on the joint:

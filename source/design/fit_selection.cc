@@ -2,6 +2,7 @@
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/fit_selection.h>
 #include <coaxfit/design/operation_analysis.h>
+#include <coaxfit/fe/section_scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -129,6 +130,18 @@ namespace coaxfit
             = design.application_factor
               * std::hypot(1e3 * design.required_torque / model.R1,
                            design.required_axial_force);
+          // On a cone the normal force is p pi D_F l_F / cos(beta), held
+          // as FitDesign holds it.
+          if (parameters.sections && parameters.sections->conical())
+            {
+              const double taper = parameters.sections->taper();
+              const double N     = din.axial_force(din.pressure(), 1.)
+                               * std::sqrt(1. + 0.25 * taper * taper);
+              return FitDesign::holding_force(N,
+                                              design.friction_coefficient,
+                                              taper)
+                     / required;
+            }
           return din.axial_force(din.pressure(), design.friction_coefficient)
                  / required;
         }
@@ -178,6 +191,8 @@ namespace coaxfit
     p.fit_limits.U_max           = U;
     p.geometry.d                 = 0.5 * (U - smoothing);
     p.design.corner_trend        = false;
+    if (p.sections && p.sections->conical())
+      p.fit.push_on_distance = U / p.sections->taper();
     return p;
   }
 
@@ -188,6 +203,16 @@ namespace coaxfit
     , design(parameters.design)
     , brittle_hub(parameters.hub.kind == MaterialKind::brittle)
   {
+    // The largest interference the model takes: U_w = 0.1 D_F, on a cone
+    // also a = l_F / 10 (complete_taper() requires the same of a run).
+    if (parameters.sections && parameters.sections->conical())
+      {
+        taper   = parameters.sections->taper();
+        U_limit = std::min(0.1 * diameter,
+                           0.1 * parameters.sections->joint_length() * taper);
+      }
+    else
+      U_limit = 0.1 * diameter + parameters.fit_limits.smoothing_loss;
     // Select mode chooses the fit: what Fit gives for a check is unused.
     if (!parameters.fit.iso_fit.empty()
         || parameters.fit.fit_case != FitCase::mean)
@@ -215,6 +240,15 @@ namespace coaxfit
     if (method != JoiningMethod::shrink
         && method != JoiningMethod::shrink_degreased)
       return;
+    if (taper_fit())
+      {
+        // A taper is pushed on to its distance; heating the hub only eases
+        // the push (no ISO fit to open).
+        notes.push_back("joining by temperature is not judged for a taper "
+                        "fit: it is pushed on by a (Design/Joining gives the "
+                        "friction)");
+        return;
+      }
     const Material &hub = parameters.hub, &shaft = parameters.shaft;
     if (!(hub.thermal_expansion > 0.) || !(hub.temperature_limit > 0.))
       {
@@ -343,7 +377,6 @@ namespace coaxfit
   {
     const DesignParameters &design    = parameters.design;
     const double            smoothing = parameters.fit_limits.smoothing_loss;
-    const double            U_limit   = 0.1 * diameter + smoothing;
     std::vector<std::pair<std::string, Parameters>> states{
       {"at assembly", at_assembly(parameters)}};
     if (parameters.operation.has_loads())
@@ -364,6 +397,8 @@ namespace coaxfit
         U_a
           = std::max(parameters.fit_limits.used(), smoothing + 5e-4 * diameter);
         U_a = std::min(U_a, smoothing + 0.05 * diameter);
+        if (taper_fit())
+          U_a = std::min(U_a, 0.5 * U_limit);
         U_b = smoothing + 1.5 * (U_a - smoothing);
       }
 
@@ -463,10 +498,12 @@ namespace coaxfit
       if (c == Criterion::slip && end.safety < S
           && end.U >= (1. - 1e-9) * U_limit)
         {
-          notes.push_back("no interference up to the model's limit (U_w = "
-                          "0.1 D) carries the loads: safety against slip "
-                          + safety_text(end.safety) + " at U = " + mm(end.U)
-                          + " mm");
+          notes.push_back(
+            "no interference up to the model's limit ("
+            + std::string(taper_fit() ? "U = a C with a = l_F / 10, or 0.1 D" :
+                                        "U_w = 0.1 D")
+            + ") carries the loads: safety against slip "
+            + safety_text(end.safety) + " at U = " + mm(end.U) + " mm");
           end.U = infinite;
           return end;
         }
@@ -551,6 +588,19 @@ namespace coaxfit
           break;
       }
 
+    // A taper's band is one of push-on distances: where no stress
+    // criterion ends it, the model's limit does.
+    if (taper_fit() && std::isfinite(least.U) && !std::isfinite(largest.U))
+      {
+        largest = {U_limit, "", "the model's limit", 0., 0};
+        notes.push_back("no stress criterion ends the band up to the model's "
+                        "limit U = "
+                        + mm(U_limit) + " mm (a = " + mm(push_on(U_limit))
+                        + " mm: a <= l_F / 10 and U <= 0.1 D_F), which ends "
+                          "it; give the yield strengths (Material/.../Yield "
+                          "strength) for a band the parts bear");
+      }
+
     // Each end in each state: the criteria and the contact zone there.
     for (const auto &[end_name, end] :
          {std::make_pair(std::string("U_min"), &least),
@@ -625,7 +675,7 @@ namespace coaxfit
   FitSelection::rank_fits()
   {
     fits.clear();
-    if (!(least.U <= largest.U))
+    if (taper_fit() || !(least.U <= largest.U))
       return;
     unjoinable.clear();
     for (const IsoFit &f : candidate_fits(diameter))
@@ -685,10 +735,17 @@ namespace coaxfit
       text << "no interference carries the required loads (" << least.criterion
            << " " << least.state << ")";
     else if (least.U > largest.U)
-      text << "U_min " << least.U << " mm (" << least.criterion << " "
-           << least.state << ") > U_max " << largest.U << " mm ("
-           << largest.criterion << " " << largest.state
-           << "): no interference both carries the loads and is borne";
+      {
+        text << "U_min " << least.U << " mm (" << least.criterion << " "
+             << least.state << ") > U_max " << largest.U << " mm ("
+             << largest.criterion << " " << largest.state
+             << "): no interference both carries the loads and is borne";
+        if (taper_fit())
+          text << " (push-on distances a_min " << push_on(least.U)
+               << " mm > a_max " << push_on(largest.U) << " mm)";
+      }
+    else if (taper_fit())
+      text << "no push-on distance carries the loads and is borne";
     else if (!unjoinable.empty())
       text << "the " << unjoinable.size() << " ISO 286 fits inside U_min "
            << least.U << " to U_max " << largest.U
@@ -712,6 +769,34 @@ namespace coaxfit
 
 
 
+  std::vector<FitSelection::BandRow>
+  FitSelection::band_rows() const
+  {
+    const auto by
+      = [](const End &end) { return end.criterion + " " + end.state; };
+    std::vector<BandRow> rows{
+      {"U_min (mm)", least.U, least_din.U, by(least), by(least_din)},
+      {"U_max (mm)", largest.U, largest_din.U, by(largest), by(largest_din)}};
+    if (taper_fit())
+      {
+        std::ostringstream C;
+        C << "taper C = " << taper;
+        rows.push_back({"a_min (mm, push-on)",
+                        push_on(least.U),
+                        push_on(least_din.U),
+                        "a = U / C",
+                        C.str()});
+        rows.push_back({"a_max (mm, push-on)",
+                        push_on(largest.U),
+                        push_on(largest_din.U),
+                        "a = U / C",
+                        C.str()});
+      }
+    return rows;
+  }
+
+
+
   void
   FitSelection::print(std::ostream &out, const unsigned int max_fits) const
   {
@@ -722,13 +807,10 @@ namespace coaxfit
       << "    " << std::left << std::setw(22) << "" << std::right
       << std::setw(12) << "FE" << std::setw(12) << "DIN 7190"
       << "  governed by (FE; DIN 7190)\n";
-    for (const auto &[label, fe, din] :
-         {std::make_tuple(std::string("U_min (mm)"), &least, &least_din),
-          std::make_tuple(std::string("U_max (mm)"), &largest, &largest_din)})
-      s << "    " << std::left << std::setw(22) << label << std::right
-        << std::setw(12) << mm(fe->U) << std::setw(12) << mm(din->U) << "  "
-        << fe->criterion << " " << fe->state << "; " << din->criterion << " "
-        << din->state << '\n';
+    for (const BandRow &row : band_rows())
+      s << "    " << std::left << std::setw(22) << row.label << std::right
+        << std::setw(12) << mm(row.fe) << std::setw(12) << mm(row.din) << "  "
+        << row.fe_by << "; " << row.din_by << '\n';
     s << "    FE solves: " << n_solves << '\n';
     for (const Check &c : checks)
       s << "    " << c.end << ", " << std::left << std::setw(12)
@@ -742,7 +824,13 @@ namespace coaxfit
         << (c.contact_lost ? " (contact lost)" : "") << '\n';
     for (const std::string &n : notes)
       s << "    note: " << n << '\n';
-    if (found())
+    if (taper_fit() && found())
+      s << "    push-on distance: from " << mm(push_on(least.U)) << " to "
+        << mm(push_on(largest.U)) << " mm (the taper C = " << taper
+        << " has no ISO fit; a = " << mm(push_on(0.5 * (least.U + largest.U)))
+        << " mm +- " << mm(push_on(0.5 * (largest.U - least.U)))
+        << " mm, checked at both ends and the middle)\n";
+    else if (found())
       {
         s << "    fits inside [U_min, U_max]: " << fits.size()
           << " (ranked: ISO 286-1's preferred first, then the widest "
@@ -778,12 +866,9 @@ namespace coaxfit
         << requirement(design, brittle_hub) << ".\n\n"
         << "| | FE | DIN 7190 | governed by (FE) | governed by (DIN 7190) "
            "|\n|---|---:|---:|---|---|\n";
-    for (const auto &[label, fe, din] :
-         {std::make_tuple(std::string("U_min (mm)"), &least, &least_din),
-          std::make_tuple(std::string("U_max (mm)"), &largest, &largest_din)})
-      out << "| " << label << " | " << mm(fe->U) << " | " << mm(din->U) << " | "
-          << fe->criterion << " " << fe->state << " | " << din->criterion << " "
-          << din->state << " |\n";
+    for (const BandRow &row : band_rows())
+      out << "| " << row.label << " | " << mm(row.fe) << " | " << mm(row.din)
+          << " | " << row.fe_by << " | " << row.din_by << " |\n";
     out << "\nFE solves: " << n_solves << ".\n\n";
     if (!checks.empty())
       {
@@ -799,7 +884,13 @@ namespace coaxfit
       }
     for (const std::string &n : notes)
       out << "Note: " << n << ".\n\n";
-    if (found())
+    if (taper_fit() && found())
+      out << "Push-on distance: from " << mm(push_on(least.U)) << " to "
+          << mm(push_on(largest.U)) << " mm (a taper has no ISO fit; a = "
+          << mm(push_on(0.5 * (least.U + largest.U))) << " mm +- "
+          << mm(push_on(0.5 * (largest.U - least.U)))
+          << " mm), checked below at both ends and the middle.\n\n";
+    else if (found())
       {
         out << "Fits inside [U_min, U_max], ranked (ISO 286-1's preferred "
                "first, then the widest tolerances, then the best centred; "

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 namespace coaxfit
 {
@@ -44,6 +46,32 @@ namespace coaxfit
     {
       const std::string name = directory + "/fit_selection.csv";
       std::ofstream     csv  = open_result_file(name);
+      if (selection.taper_fit())
+        {
+          // A taper has no ISO fit: the band of push-on distances.
+          csv << "end,U_mm,push_on_distance_mm,governed_by,U_din_mm,"
+                 "push_on_distance_din_mm,governed_by_din\n";
+          const auto cell = [](const double x) {
+            std::ostringstream c;
+            if (std::isfinite(x))
+              c << std::setprecision(8) << x;
+            return c.str();
+          };
+          for (const auto &[end, fe, din] :
+               {std::make_tuple("min", &selection.least, &selection.least_din),
+                std::make_tuple("max",
+                                &selection.largest,
+                                &selection.largest_din)})
+            csv << end << ',' << cell(fe->U) << ','
+                << cell(selection.push_on(fe->U)) << ",\"" << fe->criterion
+                << (fe->state.empty() ? "" : " ") << fe->state << "\","
+                << cell(din->U) << ',' << cell(selection.push_on(din->U))
+                << ",\"" << din->criterion << (din->state.empty() ? "" : " ")
+                << din->state << "\"\n";
+          close_result_file(csv, name);
+          return "fit_selection.csv: the band of push-on distances (a taper "
+                 "has no ISO fit)";
+        }
       csv << "rank,fit,system,preferred,ES_um,EI_um,es_um,ei_um,U_min_um,"
              "U_max_um,inside_din_band\n";
       unsigned int rank = 0;
@@ -109,6 +137,14 @@ namespace coaxfit
            {"units",
             "mm, measured (drawing) diametral interference, smoothing loss "
             "included"}};
+      if (selection.taper_fit())
+        j["selection"]["push_on"]
+          = {{"taper", selection.taper},
+             {"a_min", length(selection.push_on(selection.least.U))},
+             {"a_max", length(selection.push_on(selection.largest.U))},
+             {"a_min_din", length(selection.push_on(selection.least_din.U))},
+             {"a_max_din", length(selection.push_on(selection.largest_din.U))},
+             {"units", "mm, push-on distance a = U / taper"}};
       j["verdict"] = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
       const std::string name = directory + "/summary.json";
       std::ofstream     out  = open_result_file(name);

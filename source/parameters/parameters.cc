@@ -1142,6 +1142,15 @@ namespace coaxfit
         p.used_prm = replace_prm_line(p.used_prm, "Case", to_string(c));
         p.used_prm
           = replace_prm_line(p.used_prm, "Directory", p.output.directory);
+        // A taper's cases are push-on distances (one interference each).
+        if (sections && sections->conical())
+          {
+            p.fit.push_on_distance = p.fit_limits.used() / sections->taper();
+            p.used_prm = replace_prm_line(p.used_prm, "Case", "mean");
+            p.used_prm = replace_prm_line(p.used_prm,
+                                          "Push-on distance",
+                                          number(p.fit.push_on_distance, 10));
+          }
       }
     return p;
   }

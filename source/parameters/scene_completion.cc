@@ -340,10 +340,6 @@ namespace coaxfit
       if (!p.fit.iso_fit.empty())
         throw InputError("parameter Fit/ISO fit = " + p.fit.iso_fit
                          + " is given" + why + "; leave it out");
-      if (p.design.mode == DesignMode::select)
-        throw InputError("parameter Design/Mode = select is not allowed" + why
-                         + "; give it and Design/Mode = check (choosing a "
-                           "push-on distance is not modelled yet)");
       if (p.fit.fit_case != FitCase::mean)
         throw InputError("parameter Fit/Case = " + to_string(p.fit.fit_case)
                          + " is not allowed" + why
@@ -363,6 +359,10 @@ namespace coaxfit
       const double C     = p.sections->taper();
       const double l     = p.sections->joint_length();
       const double a_max = std::min(0.1 * D / C, 0.1 * l);
+      // A selection chooses the push-on distance: one given only starts its
+      // solves (none: one per mille of D_F in U).
+      if (p.design.mode == DesignMode::select && p.fit.push_on_distance == 0.)
+        p.fit.push_on_distance = std::min(1e-3 * D / C, 0.5 * a_max);
       // The sections are drawn where they touch and the model stays there:
       // the push must be small against the joint (and U in the linear
       // range).
@@ -464,8 +464,9 @@ namespace coaxfit
         // Only a start: without a usable interference (none given, or
         // more than the model allows, 0.1 D), one per mille of D.
         const double D = p.drawing.joint_diameter;
-        if (!interference_given
-            || !(std::abs(fit.diametral_interference) <= 0.1 * D))
+        if (!taper
+            && (!interference_given
+                || !(std::abs(fit.diametral_interference) <= 0.1 * D)))
           fit.diametral_interference = 1e-3 * D;
       }
     p.fit_limits = fit_limits_of(fit, p.drawing.joint_diameter);

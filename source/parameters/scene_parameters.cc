@@ -221,7 +221,9 @@ namespace coaxfit
                       "sets the interference: U = a C (C the taper, 0.1 "
                       "for 1:10); Diametral interference and ISO fit are "
                       "then left out. 0: not a taper fit. Allowed with a "
-                      "cone: a > 0 with a C <= 0.1 D_F.",
+                      "cone: a > 0 with a C <= 0.1 D_F and a <= l_F / 10. "
+                      "With Design/Mode = select it only starts the "
+                      "selection's solves (0: a C = D_F / 1000).",
                       Patterns::Double(0.));
     prm.leave_subsection();
   }
@@ -246,7 +248,11 @@ namespace coaxfit
                       "and the ISO 286 fits inside that band, ranked; the "
                       "first is then computed as with Fit/Case = all. "
                       "select needs Required torque or Required axial "
-                      "force > 0; Fit/ISO fit and Fit/Case are not used.");
+                      "force > 0; Fit/ISO fit and Fit/Case are not used. "
+                      "A taper fit (sections meeting on a cone) has no ISO "
+                      "fit: select gives its band of push-on distances "
+                      "(a = U / C) and computes its ends and middle as the "
+                      "cases min, mean, max.");
     prm.add_action("Mode", [this](const std::string &value) {
       mode = value == "select" ? DesignMode::select : DesignMode::check;
     });

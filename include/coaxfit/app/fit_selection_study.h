@@ -19,7 +19,9 @@ namespace coaxfit
    * report.md (the verdict, the section "Fit selection", the cases' table)
    * and parameters.prm (this run again). A design that no fit satisfies
    * writes the selection and a verdict that names the conflict, and is no
-   * error. The output directory is staged and replaced as a whole.
+   * error. A taper fit has no ISO fit: its band of push-on distances is
+   * checked at both ends and the middle (checking_push_on()). The output
+   * directory is staged and replaced as a whole.
    */
   class FitSelectionStudy
   {
@@ -67,6 +69,15 @@ namespace coaxfit
      */
     static Parameters
     checking(const Parameters &parameters, const std::string &fit);
+
+    /**
+     * @p parameters of a taper fit checking the push-on distances of the
+     * measured interferences @p U_min to @p U_max (mm) as with Fit/Case =
+     * all: its cases min, mean, max are the push-on distances U_min / C,
+     * the middle and U_max / C.
+     */
+    static Parameters
+    checking_push_on(const Parameters &parameters, double U_min, double U_max);
 
   private:
     const Parameters    parameters;

@@ -34,6 +34,17 @@ namespace coaxfit
   public:
     static constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 
+    /**
+     * The axial force (N) that holds a joint of normal force @p N (N) and
+     * friction @p mu against pulling off: mu N on a cylinder (@p taper 0),
+     * N (mu cos(beta) - sin(beta)) on a cone of taper C = 2 tan(beta), none
+     * where that is negative (a cone that is not self-locking). It is also
+     * what DIN 7190's resultant of torque and axial force is checked
+     * against (the safety against slip).
+     */
+    static double
+    holding_force(double N, double mu, double taper);
+
     /** Stresses at one check point: FE at the mid-plane, and DIN 7190. */
     struct CheckPoint
     {

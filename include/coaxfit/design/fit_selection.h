@@ -59,6 +59,15 @@ namespace coaxfit
    * is also marked whether its band lies inside DIN 7190's [U_min_din,
    * U_max_din]: the finite elements may accept a fit the plain-cylinder
    * formulas do not.
+   *
+   * A taper fit (sections that meet on a cone, taper C) has no ISO fit: its
+   * interference is U = a C of the push-on distance a. The band found the
+   * same way is one of push-on distances [a_min, a_max] = [U_min, U_max] /
+   * C (push_on()), the largest interference the model takes being the
+   * smaller of 0.1 D_F and l_F C / 10 (the push small against the joint,
+   * as a run of the taper requires); where no stress criterion ends the
+   * band before that limit, the limit ends it. found() then means a_min <=
+   * a_max.
    */
   class FitSelection
   {
@@ -107,6 +116,22 @@ namespace coaxfit
     double                   diameter = 0.; ///< D_F (mm)
     DesignParameters         design;        ///< the loads and safeties
     bool                     brittle_hub = false; ///< fracture, not yield
+    double taper   = 0.; ///< C of a taper fit; 0: a cylindrical joint
+    double U_limit = 0.; ///< the largest interference the model takes (mm)
+
+    /** Whether the joint is a cone: a band of push-on distances. */
+    bool
+    taper_fit() const
+    {
+      return taper > 0.;
+    }
+
+    /** The push-on distance (mm) of the interference @p U of a taper fit. */
+    double
+    push_on(const double U) const
+    {
+      return U / taper;
+    }
 
     /**
      * The diametral opening (mm) that joining by temperature reaches with
@@ -141,7 +166,8 @@ namespace coaxfit
     bool
     found() const
     {
-      return !fits.empty();
+      return taper_fit() ? std::isfinite(least.U) && least.U <= largest.U :
+                           !fits.empty();
     }
 
     /** Empty if a fit was found, else why none: the conflict. */
@@ -158,12 +184,25 @@ namespace coaxfit
 
     /**
      * @p parameters with the measured diametral interference @p U (mm)
-     * given directly (no ISO fit, case mean; the smoothing loss kept).
+     * given directly (no ISO fit, case mean; the smoothing loss kept; a
+     * taper fit's push-on distance U / C).
      */
     static Parameters
     at_interference(const Parameters &parameters, double U);
 
   private:
+    /** A line of the band's table: FE and DIN 7190, what governs each. */
+    struct BandRow
+    {
+      std::string label;
+      double      fe, din;
+      std::string fe_by, din_by;
+    };
+
+    /** The band's lines: U_min, U_max, and for a taper a_min, a_max. */
+    std::vector<BandRow>
+    band_rows() const;
+
     void
     compute_din(const Parameters &parameters);
 

@@ -234,25 +234,13 @@ namespace coaxfit
       rounded_side = parameters.sections->rounded_ends()[0].shaft ? 0u : 1u;
     if (parameters.sections)
       {
-        // Both meshes at once: their joint vertices must coincide.
-        auto meshes = std::make_shared<std::array<Triangulation<2>, 2>>();
-        const SectionMeshSettings settings = section_mesh_settings(parameters);
-        if (parameters.mesh.shared_joint_nodes)
-          parameters.sections->make_meshes((*meshes)[0],
-                                           (*meshes)[1],
-                                           settings);
-        else
-          {
-            SectionMeshSettings shaft = settings, hub = settings;
-            // Over a rounded edge the straight body's joint vertices come
-            // from the rounded body's (SectionScene::make_own_meshes).
-            if (parameters.mesh.hub_cell_size > 0.)
-              hub.cell_size = parameters.mesh.hub_cell_size;
-            parameters.sections->make_own_meshes((*meshes)[0],
-                                                 (*meshes)[1],
-                                                 shaft,
-                                                 hub);
-          }
+        // Both meshes at once (their joint vertices coincide, or over a
+        // rounded edge the straight body's come from the rounded body's),
+        // meshed once per settings.
+        const std::shared_ptr<const SectionScene::MeshPair> meshes
+          = parameters.sections->base_meshes(section_mesh_settings(parameters),
+                                             parameters.mesh.shared_joint_nodes,
+                                             parameters.mesh.hub_cell_size);
         const unsigned int refinements = parameters.mesh.global_refinements;
         for (unsigned int b = 0; b < 2; ++b)
           {

@@ -861,6 +861,39 @@ namespace coaxfit
 
 
 
+  std::shared_ptr<const SectionScene::MeshPair>
+  SectionScene::base_meshes(const SectionMeshSettings &settings,
+                            const bool                 shared_nodes,
+                            const double               hub_cell_size) const
+  {
+    Assert(settings.refinement_points.empty() && !settings.full_quad
+             && settings.global_refinements == 0,
+           ExcMessage("base_meshes() keys its meshes by the cell sizes, the "
+                      "grading and the joint nodes only"));
+    const auto                  key = std::make_tuple(shared_nodes,
+                                     settings.cell_size,
+                                     settings.grading_ratio,
+                                     settings.max_cell_size,
+                                     shared_nodes ? 0. : hub_cell_size);
+    std::lock_guard<std::mutex> lock(mesh_mutex);
+    if (const auto known = mesh_cache.find(key); known != mesh_cache.end())
+      return known->second;
+    auto meshes = std::make_shared<MeshPair>();
+    if (shared_nodes)
+      make_meshes((*meshes)[0], (*meshes)[1], settings);
+    else
+      {
+        SectionMeshSettings hub = settings;
+        if (hub_cell_size > 0.)
+          hub.cell_size = hub_cell_size;
+        make_own_meshes((*meshes)[0], (*meshes)[1], settings, hub);
+      }
+    mesh_cache.emplace(key, meshes);
+    return meshes;
+  }
+
+
+
   void
   SectionScene::make_own_meshes(Triangulation<2>          &shaft,
                                 Triangulation<2>          &hub,

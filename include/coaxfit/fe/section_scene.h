@@ -7,11 +7,14 @@
 #include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/fe/section_outline.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -368,6 +371,22 @@ namespace coaxfit
                     const SectionMeshSettings &shaft_settings,
                     const SectionMeshSettings &hub_settings) const;
 
+    /** Both base meshes of a run, the shaft's first. */
+    using MeshPair = std::array<Triangulation<2>, 2>;
+
+    /**
+     * Both base meshes for @p settings (before Mesh/Global refinements):
+     * make_meshes() with @p shared_nodes, else make_own_meshes() with the
+     * hub's cell size @p hub_cell_size (0: that of @p settings). Meshed
+     * once per settings and kept: a run's coarse twin, the cases of a
+     * study and the states of a selection mesh the same sections alike,
+     * and gmsh is deterministic.
+     */
+    std::shared_ptr<const MeshPair>
+    base_meshes(const SectionMeshSettings &settings,
+                bool                       shared_nodes,
+                double                     hub_cell_size) const;
+
   private:
     /**
      * The boundary of the mesh of @p outline: the joint @p joint, for a
@@ -465,6 +484,12 @@ namespace coaxfit
     double                          hub_mean_outer = 0.;
     double                          shaft_bore     = 0.;
     double                          shaft_extent   = 0.;
+
+    /** The meshes of base_meshes(), by the settings that decide them. */
+    mutable std::mutex mesh_mutex;
+    mutable std::map<std::tuple<bool, double, double, double, double>,
+                     std::shared_ptr<const MeshPair>>
+      mesh_cache;
   };
 } // namespace coaxfit
 

@@ -7,13 +7,19 @@
 // yield strength 350 MPa (yield safety 1).
 //
 // 1. DIN 7190's ends by hand (plane-stress Lame rings at D_F, Q = 0.475,
-//    tan(beta) = C / 2): the cone holds N (mu cos - sin) along the axis and
-//    the torque's circumferential force 2 T / D_F = 63157.9 N must be held:
-//    N = 702630 N, p = N cos / (pi D_F l_F) = 117.566 MPa, U_w = 2 D_F p /
-//    (E (1 - Q^2)) = 0.0686807 mm, a_min = U / C = 0.686807 mm; the hub
-//    bore's von Mises p sqrt(3 + Q^4) / (1 - Q^2) = 350 MPa gives U_max = 2
-//    D_F R_e / (E sqrt(3 + Q^4)) = 0.0906479 mm, a_max = 0.906479 mm.
-//    Required: to 1e-5 (the selection bisects the same closed forms).
+//    tan(beta) = C / 2), the hub held on the cone by friction alone
+//    (Coulomb: the friction force in the cone's surface at most mu N, N the
+//    normal force; the cone pushes the hub off with N sin(beta), so the
+//    friction along the generatrix carries (N sin(beta) + F) / cos(beta)
+//    of a pull F, and the torque's circumferential force 2 T / D_F =
+//    63157.9 N adds to it as a vector): for the torque alone N = 2 T / D_F
+//    / sqrt(mu^2 - tan^2) = 482980 N, p = N cos / (pi D_F l_F) = 80.8135
+//    MPa, U_w = 2 D_F p / (E (1 - Q^2)) = 0.0472103 mm, a_min = U / C =
+//    0.472103 mm; the hub bore's von Mises p sqrt(3 + Q^4) / (1 - Q^2) =
+//    350 MPa gives U_max = 2 D_F R_e / (E sqrt(3 + Q^4)) = 0.0906479 mm,
+//    a_max = 0.906479 mm. With 1000 N m and a pull of 20000 N together,
+//    N is found here by bisection of the friction condition.
+//    Required: to 1e-5 (the selection bisects its own closed forms).
 // 2. The finite element ends checked by running the example in check mode
 //    at them (Fit/Push-on distance a_min and a_max): the governing safety
 //    must be the required one to 0.5 % and not below it; and by the
@@ -24,8 +30,9 @@
 //    distances a_min, the middle, a_max; verdict OK.
 // 4. Without yield strengths the model's limit ends the band (a <= l_F /
 //    10 = 4 mm); a torque no push-on distance carries within yield (3500 N
-//    m) is a conflict (exit 0, the verdict says so); bad input (a push-on
-//    distance beyond the limit, an interference given): exit 1.
+//    m) is a conflict (exit 0, the verdict says so), so is a taper 3:10
+//    with mu = 0.14 (not self-locking); bad input (a push-on distance
+//    beyond the limit, an interference given): exit 1.
 
 #include "run_executable.h"
 #include "run_summary.h"
@@ -48,9 +55,12 @@ namespace
   const std::string taper
     = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/taper_fit.prm";
 
-  const std::string design = " --set \"Design/Required torque=1500\" --set "
-                             "\"Material/Hub/Yield strength=350\" --set "
-                             "\"Material/Shaft/Yield strength=350\" ";
+  const std::string design_strengths
+    = " --set \"Material/Hub/Yield strength=350\" --set "
+      "\"Material/Shaft/Yield strength=350\" ";
+
+  const std::string design
+    = " --set \"Design/Required torque=1500\"" + design_strengths;
 
   using coaxfit_test::read_summary;
 
@@ -87,12 +97,26 @@ main()
   const double D = 47.5, l = 40., E = 210000., C = 0.1, mu = 0.14;
   const double Q = D / 100., R_e = 350., T = 1500.;
   const double tan_b = C / 2., cos_b = 1. / std::sqrt(1. + tan_b * tan_b),
-               sin_b     = tan_b * cos_b;
-  const double N         = 2e3 * T / D / (mu * cos_b - sin_b);
-  const double p         = N * cos_b / (M_PI * D * l);
-  const double a_min_din = 2. * D * p / (E * (1. - Q * Q)) / C;
+               sin_b = tan_b * cos_b;
+  // The push-on distance of the normal force N (N).
+  const auto a_of = [&](const double N) {
+    const double p = N * cos_b / (M_PI * D * l);
+    return 2. * D * p / (E * (1. - Q * Q)) / C;
+  };
+  const double a_min_din
+    = a_of(2e3 * T / D / std::sqrt(mu * mu - tan_b * tan_b));
   const double a_max_din
     = 2. * D * R_e / (E * std::sqrt(3. + Q * Q * Q * Q)) / C;
+  // Torque and pull together: the least N whose friction holds both.
+  const double f_c = 2e3 * 1000. / D, pull = 20000.;
+  double       lo = 0., hi = 1e8;
+  for (unsigned int i = 0; i < 200; ++i)
+    {
+      const double N                             = 0.5 * (lo + hi);
+      const double f_g                           = (N * sin_b + pull) / cos_b;
+      (std::hypot(f_g, f_c) <= mu * N ? hi : lo) = N;
+    }
+  const double a_min_combined_din = a_of(hi);
 
   const std::string dir = "select_taper";
   std::filesystem::remove_all(dir);
@@ -110,6 +134,20 @@ main()
             << "  a_max_din " << b["a_max_din"].get<double>() << " mm, by hand "
             << a_max_din << ": "
             << agreement(b["a_max_din"].get<double>(), a_max_din, 1e-5) << '\n';
+
+  {
+    const std::string d = "select_taper_combined";
+    std::filesystem::remove_all(d);
+    const coaxfit_test::RunResult rc = coaxfit_test::run_coaxfit(
+      d,
+      "--set Design/Mode=select --set \"Design/Required torque=1000\" --set "
+      "\"Design/Required axial force=20000\""
+        + design_strengths + quiet + taper);
+    const double a = read_summary(d)["selection"]["push_on"]["a_min_din"];
+    std::cout << "  1000 N m and 20000 N (exit code " << rc.exit_code
+              << "): a_min_din " << a << " mm, by hand " << a_min_combined_din
+              << ": " << agreement(a, a_min_combined_din, 1e-5) << '\n';
+  }
 
   // 2. The finite element ends.
   const double a_min = b["a_min"].get<double>(),
@@ -180,6 +218,24 @@ main()
     std::cout << "3500 N m (exit code " << c_run.exit_code << "): verdict ok "
               << cs["verdict"]["ok"].get<bool>() << ", conflict: "
               << cs["selection"]["conflict"].get<std::string>() << '\n';
+  }
+  {
+    // A taper 3:10: tan(beta) = 0.15 > mu = 0.14, not self-locking.
+    const std::string d = "select_taper_steep";
+    std::filesystem::remove_all(d);
+    const coaxfit_test::RunResult s_run = coaxfit_test::run_coaxfit(
+      d,
+      "--set Design/Mode=select --set \"Design/Required torque=1500\" --set "
+      "\"Geometry/Shaft section=0,0; 150,0; 150,50; 40,50; 0,38; 0,0\" "
+      "--set \"Geometry/Hub section=5,39.5; 35,48.5; 35,100; 5,100; "
+      "5,39.5\""
+        + design_strengths + quiet + taper);
+    const nlohmann::json ss = read_summary(d);
+    std::cout
+      << "taper 3:10 (exit code " << s_run.exit_code << "): verdict ok "
+      << ss["verdict"]["ok"].get<bool>() << ", conflict: "
+      << coaxfit_test::gist(ss["selection"]["conflict"].get<std::string>(), 12)
+      << '\n';
   }
   for (const std::string bad : {"--set \"Fit/Push-on distance=5\"",
                                 "--set \"Fit/Diametral interference=0.05\""})

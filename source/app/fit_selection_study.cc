@@ -3,6 +3,7 @@
 #include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/app/fit_selection_study.h>
 #include <coaxfit/app/resources.h>
+#include <coaxfit/design/design_report.h>
 #include <coaxfit/design/fit_selection.h>
 #include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/design/verdict.h>
@@ -61,8 +62,8 @@ namespace coaxfit
     const double C      = p.sections->taper();
     p.fit_limits.U_min  = U_min;
     p.fit_limits.U_max  = U_max;
-    p.fit_limits.source = "push-on distances " + number(U_min / C, 6) + " to "
-                          + number(U_max / C, 6) + " mm";
+    p.fit_limits.source = "push-on distances " + figure_text(U_min / C, 5)
+                          + " to " + figure_text(U_max / C, 5) + " mm";
     p.fit_limits.fit_case  = FitCase::mean;
     p.geometry.d           = 0.5 * p.fit_limits.effective();
     p.fit.push_on_distance = p.fit_limits.used() / C;
@@ -86,7 +87,9 @@ namespace coaxfit
       out << "  results in " << parameters.output_directory()
           << (mean_values.empty() ?
                 "" :
-                " (the first fit's cases in min, mean, max)")
+                (parameters.sections && parameters.sections->conical() ?
+                   " (the push-on distances' cases in min, mean, max)" :
+                   " (the first fit's cases in min, mean, max)"))
           << '\n';
     return converged;
   }
@@ -135,8 +138,9 @@ namespace coaxfit
                                        selection.largest.U);
             if (verbose)
               out << "coaxfit: the push-on distances from "
-                  << number(selection.push_on(selection.least.U), 6) << " to "
-                  << number(selection.push_on(selection.largest.U), 6)
+                  << figure_text(selection.push_on(selection.least.U), 5)
+                  << " to "
+                  << figure_text(selection.push_on(selection.largest.U), 5)
                   << " mm, checked at both ends and the middle\n";
           }
         else

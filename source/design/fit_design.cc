@@ -2,6 +2,7 @@
 #include <coaxfit/fe/section_scene.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -57,13 +58,61 @@ namespace coaxfit
 
 
 
-  double
-  FitDesign::holding_force(const double N, const double mu, const double taper)
+  namespace
   {
-    const double tan_beta = 0.5 * taper;
-    const double cos_beta = 1. / std::sqrt(1. + tan_beta * tan_beta);
-    const double sin_beta = tan_beta * cos_beta;
+    /** tan, cos and sin of a cone's half angle from its taper C. */
+    std::array<double, 3>
+    half_angle(const double taper)
+    {
+      const double tan_beta = 0.5 * taper;
+      const double cos_beta = 1. / std::sqrt(1. + tan_beta * tan_beta);
+      return {{tan_beta, cos_beta, tan_beta * cos_beta}};
+    }
+  } // namespace
+
+
+
+  double
+  FitDesign::cone_pull_off_capacity(const double N,
+                                    const double mu,
+                                    const double taper)
+  {
+    const auto [tan_beta, cos_beta, sin_beta] = half_angle(taper);
     return std::max(0., N * (mu * cos_beta - sin_beta));
+  }
+
+
+
+  double
+  FitDesign::cone_circumferential_capacity(const double N,
+                                           const double mu,
+                                           const double taper)
+  {
+    const double tan_beta = half_angle(taper)[0];
+    return N * std::sqrt(std::max(0., mu * mu - tan_beta * tan_beta));
+  }
+
+
+
+  double
+  FitDesign::cone_slip_safety(const double N,
+                              const double mu,
+                              const double taper,
+                              const double circumferential,
+                              const double pull)
+  {
+    const auto [tan_beta, cos_beta, sin_beta] = half_angle(taper);
+    // a S^2 + b S + c = 0 with c < 0 for a self-locking cone: one
+    // positive root.
+    const double a
+      = pull * pull / (cos_beta * cos_beta) + circumferential * circumferential;
+    const double b = 2. * N * sin_beta * pull / (cos_beta * cos_beta);
+    const double c = N * N * (tan_beta * tan_beta - mu * mu);
+    if (!(c < 0.))
+      return 0.;
+    if (!(a > 0.))
+      return FitDesign::unknown;
+    return 2. * -c / (b + std::sqrt(b * b - 4. * a * c));
   }
 
 
@@ -87,17 +136,19 @@ namespace coaxfit
         // p pi D_F l_F / cos), its axial part N sin against pushing on,
         // friction mu N cos along the cone. Held against pulling off by
         // N (mu cos - sin): none unless mu > tan(beta) (self-locking).
-        const double mu_e        = design.press_in_friction_coefficient;
-        const double N_din       = din.axial_force(pressure_din, 1.) / cone_cos;
-        push_on_force            = normal_force * cone_sin;
-        push_on_force_din        = N_din * cone_sin;
-        press_in_force           = normal_force * (cone_sin + mu_e * cone_cos);
-        press_in_force_din       = N_din * (cone_sin + mu_e * cone_cos);
-        const double taper       = parameters.sections->taper();
-        axial_force_capacity     = holding_force(normal_force, mu, taper);
-        axial_force_capacity_din = holding_force(N_din, mu, taper);
-        torque_capacity          = 1e-3 * mu * R_F * normal_force;
-        torque_capacity_din      = 1e-3 * mu * R_F * N_din;
+        const double mu_e    = design.press_in_friction_coefficient;
+        const double N_din   = din.axial_force(pressure_din, 1.) / cone_cos;
+        push_on_force        = normal_force * cone_sin;
+        push_on_force_din    = N_din * cone_sin;
+        press_in_force       = normal_force * (cone_sin + mu_e * cone_cos);
+        press_in_force_din   = N_din * (cone_sin + mu_e * cone_cos);
+        const double taper   = parameters.sections->taper();
+        axial_force_capacity = cone_pull_off_capacity(normal_force, mu, taper);
+        axial_force_capacity_din = cone_pull_off_capacity(N_din, mu, taper);
+        torque_capacity
+          = 1e-3 * R_F * cone_circumferential_capacity(normal_force, mu, taper);
+        torque_capacity_din
+          = 1e-3 * R_F * cone_circumferential_capacity(N_din, mu, taper);
       }
 
     // DIN 7190's resultant of a torque and an axial force on the joint:
@@ -111,6 +162,24 @@ namespace coaxfit
       = required > 0. ? axial_force_capacity / required : FitDesign::unknown;
     safety_slip_din = required > 0. ? axial_force_capacity_din / required :
                                       FitDesign::unknown;
+    // A cone: the torque and the pull share the friction with the cone's
+    // own push-off (the capacities above are each load alone).
+    if (cone_sin > 0. && required > 0.)
+      {
+        const double taper = parameters.sections->taper();
+        const double K_A   = design.application_factor;
+        const double N_din = din.axial_force(pressure_din, 1.) / cone_cos;
+        safety_slip        = cone_slip_safety(normal_force,
+                                       mu,
+                                       taper,
+                                       K_A * circumferential,
+                                       K_A * design.required_axial_force);
+        safety_slip_din    = cone_slip_safety(N_din,
+                                           mu,
+                                           taper,
+                                           K_A * circumferential,
+                                           K_A * design.required_axial_force);
+      }
   }
 
 
@@ -302,9 +371,15 @@ namespace coaxfit
       {
         std::ostringstream w;
         w.precision(3);
-        w << "the joint slips under the required loads: safety against "
-             "slip "
-          << safety_slip << " (FE), " << safety_slip_din << " (DIN 7190)";
+        if (safety_slip >= 1.)
+          w << "DIN 7190's plain-cylinder estimate has the joint slip under "
+               "the required loads (safety against slip "
+            << safety_slip_din << "); the finite elements carry them ("
+            << safety_slip << ")";
+        else
+          w << "the joint slips under the required loads: safety against "
+               "slip "
+            << safety_slip << " (FE), " << safety_slip_din << " (DIN 7190)";
         list.push_back(w.str());
       }
     return list;

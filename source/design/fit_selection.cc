@@ -130,17 +130,20 @@ namespace coaxfit
             = design.application_factor
               * std::hypot(1e3 * design.required_torque / model.R1,
                            design.required_axial_force);
-          // On a cone the normal force is p pi D_F l_F / cos(beta), held
-          // as FitDesign holds it.
+          // On a cone the normal force is p pi D_F l_F / cos(beta), its
+          // friction shared as FitDesign shares it.
           if (parameters.sections && parameters.sections->conical())
             {
               const double taper = parameters.sections->taper();
               const double N     = din.axial_force(din.pressure(), 1.)
                                * std::sqrt(1. + 0.25 * taper * taper);
-              return FitDesign::holding_force(N,
-                                              design.friction_coefficient,
-                                              taper)
-                     / required;
+              return FitDesign::cone_slip_safety(
+                N,
+                design.friction_coefficient,
+                taper,
+                design.application_factor * 1e3 * design.required_torque
+                  / model.R1,
+                design.application_factor * design.required_axial_force);
             }
           return din.axial_force(din.pressure(), design.friction_coefficient)
                  / required;
@@ -470,6 +473,20 @@ namespace coaxfit
       double U_last = U_b, f_last = figure_at(U_b);
       double U = std::clamp(e.U, smoothing + 1e-6 * diameter, U_limit);
       const unsigned int before = n_solves;
+      // A stress criterion whose line ends beyond the largest interference
+      // the model takes and that holds there does not end the band: the
+      // model's limit does.
+      if (c != Criterion::slip && e.U >= U_limit)
+        {
+          end.U      = U_limit;
+          end.safety = safety_of(state_at(e.state, U_limit), c);
+          if (end.safety >= S)
+            {
+              end.U      = infinite;
+              end.solves = n_solves - before;
+              return end;
+            }
+        }
       for (unsigned int step = 0; step < 7; ++step)
         {
           const double safety = safety_of(state_at(e.state, U), c);
@@ -597,8 +614,11 @@ namespace coaxfit
                         "limit U = "
                         + mm(U_limit) + " mm (a = " + mm(push_on(U_limit))
                         + " mm: a <= l_F / 10 and U <= 0.1 D_F), which ends "
-                          "it; give the yield strengths (Material/.../Yield "
-                          "strength) for a band the parts bear");
+                          "it"
+                        + (criteria_of(parameters).size() == 1 ?
+                             "; give the yield strengths (Material/.../Yield "
+                             "strength) for a band the parts bear" :
+                             ""));
       }
 
     // Each end in each state: the criteria and the contact zone there.
@@ -731,7 +751,20 @@ namespace coaxfit
       return "";
     std::ostringstream text;
     text << std::setprecision(4);
-    if (!std::isfinite(least.U))
+    const double tan_beta = 0.5 * taper;
+    if (taper_fit() && !(design.friction_coefficient > tan_beta))
+      text << "the taper is not self-locking (mu = "
+           << design.friction_coefficient
+           << " <= tan(half angle) = " << tan_beta
+           << "): friction alone does not hold the hub on the cone at any "
+              "push-on distance; secure it axially (a nut) and check it "
+              "with Design/Mode = check, or choose a slimmer taper";
+    else if (!std::isfinite(least.U) && taper_fit())
+      text << "no push-on distance up to the model's limit a = "
+           << push_on(U_limit)
+           << " mm (a <= l_F / 10, U <= 0.1 D_F) carries the required loads ("
+           << least.criterion << " " << least.state << ")";
+    else if (!std::isfinite(least.U))
       text << "no interference carries the required loads (" << least.criterion
            << " " << least.state << ")";
     else if (least.U > largest.U)
@@ -772,8 +805,11 @@ namespace coaxfit
   std::vector<FitSelection::BandRow>
   FitSelection::band_rows() const
   {
-    const auto by
-      = [](const End &end) { return end.criterion + " " + end.state; };
+    const auto by = [](const End &end) {
+      if (end.criterion.empty() || end.state.empty())
+        return end.criterion.empty() ? std::string("-") : end.criterion;
+      return end.criterion + " " + end.state;
+    };
     std::vector<BandRow> rows{
       {"U_min (mm)", least.U, least_din.U, by(least), by(least_din)},
       {"U_max (mm)", largest.U, largest_din.U, by(largest), by(largest_din)}};

@@ -340,7 +340,8 @@ namespace coaxfit
       if (!p.fit.iso_fit.empty())
         throw InputError("parameter Fit/ISO fit = " + p.fit.iso_fit
                          + " is given" + why + "; leave it out");
-      if (p.fit.fit_case != FitCase::mean)
+      if (p.fit.fit_case != FitCase::mean
+          && p.design.mode != DesignMode::select)
         throw InputError("parameter Fit/Case = " + to_string(p.fit.fit_case)
                          + " is not allowed" + why
                          + " (one interference: allowed is mean)");

@@ -35,15 +35,42 @@ namespace coaxfit
     static constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 
     /**
-     * The axial force (N) that holds a joint of normal force @p N (N) and
-     * friction @p mu against pulling off: mu N on a cylinder (@p taper 0),
-     * N (mu cos(beta) - sin(beta)) on a cone of taper C = 2 tan(beta), none
-     * where that is negative (a cone that is not self-locking). It is also
-     * what DIN 7190's resultant of torque and axial force is checked
-     * against (the safety against slip).
+     * Friction on a cone of taper C = 2 tan(beta) (@p taper) with the normal
+     * force @p N (N) and the friction coefficient @p mu, the hub held along
+     * the axis by friction alone (Coulomb: the friction force in the
+     * cone's surface at most mu N; a nut holding the hub would leave more).
+     * The cone pushes the hub off with N sin(beta), so friction along the
+     * generatrix must already carry (N sin(beta) + F) / cos(beta) of an
+     * axial pull F, and the circumferential force 2 M / D_F of a torque M
+     * adds to it as a vector.
+     *
+     * The pull (N) the cone holds alone: N (mu cos(beta) - sin(beta)), 0
+     * where that is negative (not self-locking).
      */
     static double
-    holding_force(double N, double mu, double taper);
+    cone_pull_off_capacity(double N, double mu, double taper);
+
+    /**
+     * The circumferential force (N) the cone of cone_pull_off_capacity()
+     * holds alone: N sqrt(mu^2 - tan^2(beta)), 0 if not self-locking.
+     */
+    static double
+    cone_circumferential_capacity(double N, double mu, double taper);
+
+    /**
+     * The safety against slip of the cone of cone_pull_off_capacity()
+     * under the circumferential force @p circumferential and the axial
+     * pull @p pull (N, both times K_A): the factor S on both at which the
+     * friction reaches mu N, ((N sin + S pull) / cos)^2 + (S
+     * circumferential)^2 = (mu N)^2; 0 if not self-locking, linear in N.
+     * On a cylinder it is DIN 7190's mu N over the resultant of the two.
+     */
+    static double
+    cone_slip_safety(double N,
+                     double mu,
+                     double taper,
+                     double circumferential,
+                     double pull);
 
     /** Stresses at one check point: FE at the mid-plane, and DIN 7190. */
     struct CheckPoint

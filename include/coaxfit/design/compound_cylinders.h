@@ -1,0 +1,111 @@
+#ifndef coaxfit_compound_cylinders_h
+#define coaxfit_compound_cylinders_h
+
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * N coaxial rings of equal length shrunk into each other (a compound
+   * cylinder: a shaft in a sleeve in a hub, a bushing in a housing, the
+   * layers of a shrunk pressure vessel), each in a plane-stress Lame state:
+   * with free ends and frictionless joints this is the exact elastic
+   * solution of the assembly, against which a finite element model of the
+   * same rings converges, and the plain-cylinder estimate of each joint's
+   * pressure in an assembly of several bodies (DIN 7190-1's formulas are
+   * its case N = 2).
+   *
+   * In ring i (a_i <= r <= b_i, Young's modulus E_i, Poisson's ratio
+   * nu_i) the radial displacement is u = A_i r + B_i / r, and
+   *   sigma_r = E_i / (1 - nu_i^2) ((1 + nu_i) A_i - (1 - nu_i) B_i / r^2),
+   *   sigma_t = E_i / (1 - nu_i^2) ((1 + nu_i) A_i + (1 - nu_i) B_i / r^2)
+   * (B_0 = 0 for a solid core). The conditions: sigma_r = -p_in at the
+   * core's bore and -p_out at the outer surface; at the joint k between
+   * ring k and ring k + 1 (radius R_k = b_k = a_{k+1}) the radial stress
+   * continuous, -p_k, and the diametral interference U_k closed,
+   * u_{k+1}(R_k) - u_k(R_k) = U_k / 2 (the outer ring's bore is drawn U_k
+   * smaller than the inner ring's outer diameter). A joint whose pressure
+   * would be negative (a clearance, or one opened by the others) is open
+   * instead: p_k = 0 and its gap u_{k+1} - u_k - U_k / 2 >= 0, found by an
+   * active set over the joints (exact, at most 2^(N-1) solves, in practice
+   * one or two).
+   */
+  class CompoundCylinders
+  {
+  public:
+    /** One ring (diameters in mm, E in MPa). */
+    struct Ring
+    {
+      double inner_diameter; ///< 0: a solid core (the first ring only)
+      double outer_diameter;
+      double E;
+      double nu;
+    };
+
+    /**
+     * Solve the rings @p rings (inside out; each ring's inner diameter
+     * the previous one's outer diameter) with the diametral interferences
+     * @p interferences (mm, one per joint, negative: a clearance) and the
+     * pressures @p inner_pressure on the core's bore (a hollow core) and
+     * @p outer_pressure on the outer surface (MPa).
+     * @throws std::invalid_argument for fewer than two rings, rings that
+     * do not meet, a number of interferences that is not the number of
+     * joints, or material constants out of range.
+     */
+    CompoundCylinders(const std::vector<Ring>   &rings,
+                      const std::vector<double> &interferences,
+                      double                     inner_pressure = 0.,
+                      double                     outer_pressure = 0.);
+
+    /** The contact pressure of joint @p k (MPa; 0 if open). */
+    double
+    pressure(unsigned int k) const
+    {
+      return pressures[k];
+    }
+
+    /** The radial gap of joint @p k (mm; 0 if closed). */
+    double
+    gap(unsigned int k) const
+    {
+      return gaps[k];
+    }
+
+    /** The number of joints, N - 1. */
+    unsigned int
+    n_joints() const
+    {
+      return pressures.size();
+    }
+
+    /** The radial displacement (mm) of ring @p i at radius @p r. */
+    double
+    radial_displacement(unsigned int i, double r) const;
+
+    /** The radial stress (MPa) of ring @p i at radius @p r. */
+    double
+    radial_stress(unsigned int i, double r) const;
+
+    /** The hoop stress (MPa) of ring @p i at radius @p r. */
+    double
+    hoop_stress(unsigned int i, double r) const;
+
+  private:
+    std::vector<Ring>   rings;
+    std::vector<double> A, B;
+    std::vector<double> pressures, gaps;
+
+    /**
+     * Solve for A and B with the joints @p closed in contact and the
+     * others free.
+     */
+    void
+    solve(const std::vector<double> &interferences,
+          const std::vector<bool>   &closed,
+          double                     inner_pressure,
+          double                     outer_pressure);
+  };
+} // namespace coaxfit
+
+#endif

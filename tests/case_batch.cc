@@ -237,6 +237,25 @@ main()
               << '\n';
   }
 
+  // A sweep of the load of a selection whose file has none: the file is a
+  // case with the first value.
+  {
+    const coaxfit_test::RunResult r = run_command(
+      "timeout 120 " + std::string(coaxfit_executable)
+      + " --quiet --jobs 1 --set Design/Mode=select --set "
+        "Output/Directory=results/select --sweep 'Design/Required "
+        "torque=100,200' lame_a.prm 2>&1 >/dev/null");
+    const auto rows = read_csv("results/select_sweep/sweep.csv");
+    std::cout << "sweep of the torque of a selection (the file without a "
+                 "load): exit code "
+              << r.exit_code << ", " << rows.size() - 1 << " rows:";
+    const unsigned int value  = column(rows, "Design/Required torque"),
+                       status = column(rows, "status");
+    for (unsigned int i = 1; i < rows.size(); ++i)
+      std::cout << ' ' << rows[i][value] << ' ' << rows[i][status];
+    std::cout << '\n';
+  }
+
   // Guards, before any case runs: directories inside each other, a table
   // that would land in a case's directory (replaced as a whole), overwrite
   // an input file or replace a directory.

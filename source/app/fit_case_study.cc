@@ -215,10 +215,13 @@ namespace coaxfit
         table << '\n';
       }
     table << verdict_line() << '\n'
-          << "  fit_cases.csv: the design figures of the three cases\n"
-          << "  report.md: the verdict and the table, with links to the "
-             "cases' reports\n";
+          << "  fit_cases.csv: the design figures of the three cases\n";
+    if (parameters.output.write_report)
+      table << "  report.md: the verdict and the table, with links to the "
+               "cases' reports\n";
     out << table.str();
+    if (!parameters.output.write_report)
+      return;
 
     const std::string report_name = directory + "/report.md";
     std::ofstream     report      = open_result_file(report_name);

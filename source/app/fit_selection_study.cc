@@ -170,13 +170,17 @@ namespace coaxfit
     else
       {
         // No fit: the verdict and the selection are the report.
-        const std::string name   = staging + "/report.md";
-        std::ofstream     report = open_result_file(name);
-        report << "# coaxfit report: fit selection at D_F = "
-               << parameters.drawing.joint_diameter << " mm\n\n## Verdict\n\n"
-               << verdict.line() << "\n\n"
-               << section.str();
-        close_result_file(report, name);
+        if (parameters.output.write_report)
+          {
+            const std::string name   = staging + "/report.md";
+            std::ofstream     report = open_result_file(name);
+            report << "# coaxfit report: fit selection at D_F = "
+                   << parameters.drawing.joint_diameter
+                   << " mm\n\n## Verdict\n\n"
+                   << verdict.line() << "\n\n"
+                   << section.str();
+            close_result_file(report, name);
+          }
         out << verdict.line() << '\n';
       }
 

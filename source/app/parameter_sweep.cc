@@ -175,7 +175,19 @@ namespace coaxfit
     auto base_overrides = overrides;
     if (sweep.entry == "Fit/Case")
       base_overrides.emplace_back(sweep.entry, sweep.values.front());
-    const Parameters base = read_parameters(filename, base_overrides);
+    Parameters base;
+    try
+      {
+        base = read_parameters(filename, base_overrides);
+      }
+    catch (const InputError &)
+      {
+        // The swept entry may be what makes the file a case (a load swept
+        // for a selection whose file has none): the file with the first
+        // value (its message, if it fails too).
+        base_overrides.emplace_back(sweep.entry, sweep.values.front());
+        base = read_parameters(filename, base_overrides);
+      }
     // Design/Mode = select does not use Fit/Case (its first fit is
     // checked in all three cases).
     if (base.fit.fit_case == FitCase::all

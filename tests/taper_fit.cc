@@ -200,6 +200,8 @@ main()
           + taper},
        {"a case of an ISO fit", "--set Fit/Case=min " + taper},
        {"loads of operation", "--set Operation/Speed=20000 " + taper},
+       {"a pressure of operation",
+        "--set \"Operation/Hub outer pressure=10\" " + taper},
        {"a cone at 45 degrees",
         "--set \"Geometry/Shaft section=0, 0; 100, 0; 100, 60; 10, 60; 0, 40; "
         "0, 0\" --set \"Geometry/Hub section=2, 44; 8, 56; 8, 100; 2, 100; "

@@ -605,6 +605,17 @@ namespace coaxfit
           break;
       }
 
+    // A taper's cases are run at the band's ends: U_min at least what a
+    // run takes (U_w of 1e-6 D_F, far above the 1e-9 D_F it allows).
+    if (taper_fit() && std::isfinite(least.U)
+        && least.U < smoothing + 1e-6 * diameter)
+      {
+        least.U = smoothing + 1e-6 * diameter;
+        notes.push_back("the loads are carried at any push-on distance: a_min "
+                        "is set to "
+                        + mm(push_on(least.U)) + " mm (U_w = 1e-6 D_F)");
+      }
+
     // A taper's band is one of push-on distances: where no stress
     // criterion ends it, the model's limit does.
     if (taper_fit() && std::isfinite(least.U) && !std::isfinite(largest.U))

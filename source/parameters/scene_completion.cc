@@ -346,16 +346,16 @@ namespace coaxfit
                          + " is not allowed" + why
                          + " (one interference: allowed is mean)");
       const OperationParameters &o = p.operation;
-      if (o.speed != 0. || o.shaft_temperature() != o.assembly_temperature
-          || o.hub_temperature() != o.assembly_temperature)
+      if (o.has_loads())
         throw InputError(
-          "parameters Operation/Speed, Shaft temperature and Hub "
-          "temperature give loads of operation"
+          "parameters Operation/Speed, Shaft temperature, Hub temperature "
+          "and the pressures give loads of operation"
           + why
           + "; a taper fit is modelled as pushed on and held at its faces, "
             "which would also hold it against the axial strains of "
             "operation: allowed is the assembled state only (Speed 0, the "
-            "temperatures those of assembly)");
+            "temperatures those of assembly, no Shaft bore pressure, Hub "
+            "outer pressure or Face pressures)");
       const double D     = 2. * p.sections->joint_radius();
       const double C     = p.sections->taper();
       const double l     = p.sections->joint_length();

@@ -166,7 +166,7 @@ main()
               + taper);
     std::cout
       << "a cone of 29.9 degrees with rounded coordinates: exit "
-      << steep.exit_code << ", von Mises at the hub bore's end zone "
+      << steep.exit_code << ", largest von Mises at the hub bore off the ends "
       << (steep.summary.is_null() ? "missing" :
           steep.summary["design"]["surface_maxima"]["hub bore"]["von_mises"]
               .is_number() ?

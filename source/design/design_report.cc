@@ -38,7 +38,8 @@ namespace coaxfit
               << ": max von Mises, middle half (MPa, z " << m.interior_z << ")";
         rows.push_back({label.str(), m.interior, nan});
         label.str("");
-        label << m.name << ": max von Mises, end zone (MPa, z " << m.z << ")";
+        label << m.name << ": max von Mises, off the ends (MPa, z " << m.z
+              << ")";
         rows.push_back({label.str(), m.von_mises, nan});
       }
     rows.push_back({"safety against yield, hub",

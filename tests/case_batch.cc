@@ -238,13 +238,14 @@ main()
   }
 
   // A sweep of the load of a selection whose file has none: the file is a
-  // case with the first value.
+  // case with the first value; 1e7 N m no interference up to 0.1 D_F
+  // carries (status no fit, exit code 0).
   {
     const coaxfit_test::RunResult r = run_command(
       "timeout 120 " + std::string(coaxfit_executable)
       + " --quiet --jobs 1 --set Design/Mode=select --set "
         "Output/Directory=results/select --sweep 'Design/Required "
-        "torque=100,200' lame_a.prm 2>&1 >/dev/null");
+        "torque=100,200,1e7' lame_a.prm 2>&1 >/dev/null");
     const auto rows = read_csv("results/select_sweep/sweep.csv");
     std::cout << "sweep of the torque of a selection (the file without a "
                  "load): exit code "

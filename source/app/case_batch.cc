@@ -52,7 +52,8 @@ namespace coaxfit
   CaseFigures::serialize() const
   {
     std::ostringstream s;
-    s << std::setprecision(17) << (converged ? 1 : 0) << ' ' << steps;
+    s << std::setprecision(17) << (converged ? 1 : 0) << ' ' << steps << ' '
+      << (no_fit ? 1 : 0);
     for (const double v : values)
       s << ' ' << (std::isfinite(v) ? v : std::nan(""));
     return s.str();
@@ -65,9 +66,10 @@ namespace coaxfit
   {
     std::istringstream s(text);
     CaseFigures        f;
-    int                converged = 0;
-    s >> converged >> f.steps;
+    int                converged = 0, no_fit = 0;
+    s >> converged >> f.steps >> no_fit;
     f.converged = converged == 1;
+    f.no_fit    = no_fit == 1;
     std::string word;
     while (s >> word)
       f.values.push_back(word == "nan" || word == "-nan" ? std::nan("") :
@@ -99,6 +101,7 @@ namespace coaxfit
           = directory.empty() ? study.run() : study.run_in(directory);
         figures.steps  = study.mean_case_steps();
         figures.values = study.mean_case_values();
+        figures.no_fit = figures.values.empty();
         if (figures.values.empty())
           figures.values.assign(CaseFigures::column_names().size(),
                                 std::nan(""));
@@ -472,7 +475,7 @@ namespace coaxfit
       switch (o.exit_code)
         {
           case 0:
-            return "converged";
+            return o.figures.no_fit ? "no fit" : "converged";
           case 1:
             return "bad input";
           case 2:

@@ -17,6 +17,8 @@ namespace coaxfit
   {
     bool         converged = false;
     unsigned int steps     = 0;
+    /** A selection that found no fit (its figures NaN; not an error). */
+    bool no_fit = false;
     /** In the order of column_names(); NaN where the case has none. */
     std::vector<double> values;
 

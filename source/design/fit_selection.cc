@@ -826,18 +826,17 @@ namespace coaxfit
       {"U_max (mm)", largest.U, largest_din.U, by(largest), by(largest_din)}};
     if (taper_fit())
       {
-        std::ostringstream C;
-        C << "taper C = " << taper;
+        // a = U / C, governed as U is.
         rows.push_back({"a_min (mm, push-on)",
                         push_on(least.U),
                         push_on(least_din.U),
-                        "a = U / C",
-                        C.str()});
+                        by(least),
+                        by(least_din)});
         rows.push_back({"a_max (mm, push-on)",
                         push_on(largest.U),
                         push_on(largest_din.U),
-                        "a = U / C",
-                        C.str()});
+                        by(largest),
+                        by(largest_din)});
       }
     return rows;
   }

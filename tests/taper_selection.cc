@@ -27,7 +27,8 @@
 //    check run at a = 0.5 mm predicts a_min = 0.5 / S_slip(0.5) and a_max =
 //    0.5 S_yield(0.5), within 0.2 %.
 // 3. The case study of the band (subdirectories min, mean, max): push-on
-//    distances a_min, the middle, a_max; verdict OK.
+//    distances a_min, the middle, a_max; verdict OK; the min case's
+//    parameters.prm repeats it to the last digit.
 // 4. Without yield strengths the model's limit ends the band (a <= l_F /
 //    10 = 4 mm); a torque no push-on distance carries within yield (3500 N
 //    m) is a conflict (exit 0, the verdict says so), so is a taper 3:10
@@ -190,6 +191,18 @@ main()
                 << (cs["verdict"]["ok"].get<bool>() ? "OK" : "FAILED") << ")";
     }
   std::cout << "\n  verdict ok: " << s["verdict"]["ok"].get<bool>() << '\n';
+  {
+    // The min case's parameters.prm repeats it to the last digit.
+    const std::string d = "repeat_taper_min";
+    std::filesystem::remove_all(d);
+    coaxfit_test::run_coaxfit(d, quiet + dir + "/min/parameters.prm");
+    std::cout << "  min/parameters.prm repeats the min case: "
+              << (read_summary(d)["pressure"]["mean"]
+                      == read_summary(dir + "/min")["pressure"]["mean"] ?
+                    "yes, to the last digit" :
+                    "NO")
+              << '\n';
+  }
 
   // 4. The model's limit, a conflict, bad input.
   {

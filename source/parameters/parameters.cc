@@ -1149,7 +1149,7 @@ namespace coaxfit
             p.used_prm = replace_prm_line(p.used_prm, "Case", "mean");
             p.used_prm = replace_prm_line(p.used_prm,
                                           "Push-on distance",
-                                          number(p.fit.push_on_distance, 10));
+                                          number(p.fit.push_on_distance, 17));
           }
       }
     return p;

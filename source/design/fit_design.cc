@@ -45,9 +45,9 @@ namespace coaxfit
     // A cone's surface is pi D_F l_F / cos(beta), beta its half angle.
     if (parameters.sections && parameters.sections->conical())
       {
-        const double tan_beta = 0.5 * parameters.sections->taper();
-        cone_cos              = 1. / std::sqrt(1. + tan_beta * tan_beta);
-        cone_sin              = tan_beta * cone_cos;
+        const auto angle = cone_half_angle(parameters.sections->taper());
+        cone_cos         = angle[1];
+        cone_sin         = angle[2];
       }
     mean_pressure = normal_force * cone_cos
                     / (M_PI * 2. * parameters.geometry.R1 * din.joint_length());
@@ -58,17 +58,13 @@ namespace coaxfit
 
 
 
-  namespace
+  std::array<double, 3>
+  FitDesign::cone_half_angle(const double taper)
   {
-    /** tan, cos and sin of a cone's half angle from its taper C. */
-    std::array<double, 3>
-    half_angle(const double taper)
-    {
-      const double tan_beta = 0.5 * taper;
-      const double cos_beta = 1. / std::sqrt(1. + tan_beta * tan_beta);
-      return {{tan_beta, cos_beta, tan_beta * cos_beta}};
-    }
-  } // namespace
+    const double tan_beta = 0.5 * taper;
+    const double cos_beta = 1. / std::sqrt(1. + tan_beta * tan_beta);
+    return {{tan_beta, cos_beta, tan_beta * cos_beta}};
+  }
 
 
 
@@ -77,7 +73,7 @@ namespace coaxfit
                                     const double mu,
                                     const double taper)
   {
-    const auto [tan_beta, cos_beta, sin_beta] = half_angle(taper);
+    const auto [tan_beta, cos_beta, sin_beta] = cone_half_angle(taper);
     return std::max(0., N * (mu * cos_beta - sin_beta));
   }
 
@@ -88,7 +84,7 @@ namespace coaxfit
                                            const double mu,
                                            const double taper)
   {
-    const double tan_beta = half_angle(taper)[0];
+    const double tan_beta = cone_half_angle(taper)[0];
     return N * std::sqrt(std::max(0., mu * mu - tan_beta * tan_beta));
   }
 
@@ -101,7 +97,7 @@ namespace coaxfit
                               const double circumferential,
                               const double pull)
   {
-    const auto [tan_beta, cos_beta, sin_beta] = half_angle(taper);
+    const auto [tan_beta, cos_beta, sin_beta] = cone_half_angle(taper);
     // a S^2 + b S + c = 0 with c < 0 for a self-locking cone: one
     // positive root.
     const double a
@@ -130,19 +126,20 @@ namespace coaxfit
     press_in_force = design.press_in_friction_coefficient * normal_force;
     press_in_force_din
       = din.axial_force(pressure_din, design.press_in_friction_coefficient);
-    if (cone_sin > 0.)
+    // A cone: the normal force N over its surface (the estimate's
+    // p pi D_F l_F / cos), its axial part N sin against pushing on,
+    // friction mu N cos along the cone. Held against pulling off by
+    // N (mu cos - sin): none unless mu > tan(beta) (self-locking).
+    const bool   cone  = cone_sin > 0.;
+    const double taper = cone ? parameters.sections->taper() : 0.;
+    const double N_din = din.axial_force(pressure_din, 1.) / cone_cos;
+    if (cone)
       {
-        // A cone: the normal force N over its surface (the estimate's
-        // p pi D_F l_F / cos), its axial part N sin against pushing on,
-        // friction mu N cos along the cone. Held against pulling off by
-        // N (mu cos - sin): none unless mu > tan(beta) (self-locking).
         const double mu_e    = design.press_in_friction_coefficient;
-        const double N_din   = din.axial_force(pressure_din, 1.) / cone_cos;
         push_on_force        = normal_force * cone_sin;
         push_on_force_din    = N_din * cone_sin;
         press_in_force       = normal_force * (cone_sin + mu_e * cone_cos);
         press_in_force_din   = N_din * (cone_sin + mu_e * cone_cos);
-        const double taper   = parameters.sections->taper();
         axial_force_capacity = cone_pull_off_capacity(normal_force, mu, taper);
         axial_force_capacity_din = cone_pull_off_capacity(N_din, mu, taper);
         torque_capacity
@@ -158,23 +155,24 @@ namespace coaxfit
     const double required
       = design.application_factor
         * std::hypot(circumferential, design.required_axial_force);
-    safety_slip
-      = required > 0. ? axial_force_capacity / required : FitDesign::unknown;
-    safety_slip_din = required > 0. ? axial_force_capacity_din / required :
-                                      FitDesign::unknown;
-    // A cone: the torque and the pull share the friction with the cone's
+    // On a cone the torque and the pull share the friction with the cone's
     // own push-off (the capacities above are each load alone).
-    if (cone_sin > 0. && required > 0.)
+    if (!(required > 0.))
+      safety_slip = safety_slip_din = FitDesign::unknown;
+    else if (!cone)
       {
-        const double taper = parameters.sections->taper();
-        const double K_A   = design.application_factor;
-        const double N_din = din.axial_force(pressure_din, 1.) / cone_cos;
-        safety_slip        = cone_slip_safety(normal_force,
+        safety_slip     = axial_force_capacity / required;
+        safety_slip_din = axial_force_capacity_din / required;
+      }
+    else
+      {
+        const double K_A = design.application_factor;
+        safety_slip      = cone_slip_safety(normal_force,
                                        mu,
                                        taper,
                                        K_A * circumferential,
                                        K_A * design.required_axial_force);
-        safety_slip_din    = cone_slip_safety(N_din,
+        safety_slip_din  = cone_slip_safety(N_din,
                                            mu,
                                            taper,
                                            K_A * circumferential,

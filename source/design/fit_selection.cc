@@ -126,17 +126,13 @@ namespace coaxfit
       const DesignParameters &design = parameters.design;
       if (c == Criterion::slip)
         {
-          const double required
-            = design.application_factor
-              * std::hypot(1e3 * design.required_torque / model.R1,
-                           design.required_axial_force);
           // On a cone the normal force is p pi D_F l_F / cos(beta), its
           // friction shared as FitDesign shares it.
           if (parameters.sections && parameters.sections->conical())
             {
               const double taper = parameters.sections->taper();
               const double N     = din.axial_force(din.pressure(), 1.)
-                               * std::sqrt(1. + 0.25 * taper * taper);
+                               / FitDesign::cone_half_angle(taper)[1];
               return FitDesign::cone_slip_safety(
                 N,
                 design.friction_coefficient,
@@ -145,6 +141,10 @@ namespace coaxfit
                   / model.R1,
                 design.application_factor * design.required_axial_force);
             }
+          const double required
+            = design.application_factor
+              * std::hypot(1e3 * design.required_torque / model.R1,
+                           design.required_axial_force);
           return din.axial_force(din.pressure(), design.friction_coefficient)
                  / required;
         }
@@ -817,9 +817,7 @@ namespace coaxfit
   FitSelection::band_rows() const
   {
     const auto by = [](const End &end) {
-      if (end.criterion.empty() || end.state.empty())
-        return end.criterion.empty() ? std::string("-") : end.criterion;
-      return end.criterion + " " + end.state;
+      return end.criterion.empty() ? std::string("-") : end.governed_by();
     };
     std::vector<BandRow> rows{
       {"U_min (mm)", least.U, least_din.U, by(least), by(least_din)},

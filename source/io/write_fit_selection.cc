@@ -63,11 +63,10 @@ namespace coaxfit
                                 &selection.largest,
                                 &selection.largest_din)})
             csv << end << ',' << cell(fe->U) << ','
-                << cell(selection.push_on(fe->U)) << ",\"" << fe->criterion
-                << (fe->state.empty() ? "" : " ") << fe->state << "\","
-                << cell(din->U) << ',' << cell(selection.push_on(din->U))
-                << ",\"" << din->criterion << (din->state.empty() ? "" : " ")
-                << din->state << "\"\n";
+                << cell(selection.push_on(fe->U)) << ",\"" << fe->governed_by()
+                << "\"," << cell(din->U) << ','
+                << cell(selection.push_on(din->U)) << ",\""
+                << din->governed_by() << "\"\n";
           close_result_file(csv, name);
           return "fit_selection.csv: the band of push-on distances (a taper "
                  "has no ISO fit)";

@@ -8,6 +8,7 @@
 #include <coaxfit/fe/body_stress.h>
 #include <coaxfit/parameters/parameters.h>
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -33,6 +34,13 @@ namespace coaxfit
   {
   public:
     static constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+
+    /**
+     * tan, cos and sin of the half angle beta of a cone of taper C = 2
+     * tan(beta) (@p taper; 0: a cylinder, {0, 1, 0}).
+     */
+    static std::array<double, 3>
+    cone_half_angle(double taper);
 
     /**
      * Friction on a cone of taper C = 2 tan(beta) (@p taper) with the normal

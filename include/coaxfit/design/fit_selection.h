@@ -85,6 +85,14 @@ namespace coaxfit
       std::string  criterion;  ///< "slip", "yield of the hub", ...
       double       safety = 0; ///< the governing safety at U (FE)
       unsigned int solves = 0; ///< FE solves of its correction
+
+      /** "criterion state", or the one given ("" if neither). */
+      std::string
+      governed_by() const
+      {
+        return state.empty() || criterion.empty() ? criterion + state :
+                                                    criterion + " " + state;
+      }
     };
 
     /** The figures of a state at one end (FE, solved at that end). */

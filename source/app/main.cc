@@ -1,11 +1,13 @@
 #include <coaxfit/app/case_batch.h>
 #include <coaxfit/app/parameter_sweep.h>
 #include <coaxfit/app/run_guard.h>
+#include <coaxfit/app/stack_fit.h>
 #include <coaxfit/app/usage.h>
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/base/interruption.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/parameters/parameters.h>
+#include <coaxfit/parameters/stack_parameters.h>
 
 #include <cerrno>
 #include <cstdlib>
@@ -362,6 +364,36 @@ namespace
 
         check_standard_output_usable();
         const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
+        // A file of several bodies (Assembly/Bodies) runs on its own.
+        const std::vector<std::string> bodies
+          = assembly_bodies(line.filenames[0], line.overrides);
+        if (!bodies.empty() && (line.sweep || line.filenames.size() > 1))
+          throw InputError(
+            "parameter file '" + line.filenames[0]
+            + "' names several bodies (Assembly/Bodies): such a file runs on "
+              "its own in this version (no --sweep, no several files)");
+        for (std::size_t i = 1; i < line.filenames.size(); ++i)
+          if (!assembly_bodies(line.filenames[i], line.overrides).empty())
+            throw InputError(
+              "parameter file '" + line.filenames[i]
+              + "' names several bodies (Assembly/Bodies): such a file runs "
+                "on its own in this version (no --sweep, no several files)");
+        if (!bodies.empty())
+          {
+            const StackParameters parameters
+              = read_stack_parameters(line.filenames[0], line.overrides);
+            StackFit  fit(parameters);
+            const int code = fit.run(std::cout, !line.quiet);
+            check_standard_output();
+            if (code == 2)
+              std::cerr << "coaxfit: the staggered process of the stack did "
+                           "not converge in Coupling/Max steps = "
+                        << parameters.max_steps
+                        << " steps; raise it or set Solver/Method = "
+                           "monolithic"
+                        << std::endl;
+            return code;
+          }
         if (line.sweep)
           {
             const int code = ParameterSweep(line.filenames[0],

@@ -127,20 +127,29 @@ namespace coaxfit
                                          dof_handler,
                                          support_points);
     // The DoFs of one component on S, ordered by z (u_r and u_z share
-    // their support points, so both lists name the same points).
-    const auto on_contact = [&](const unsigned int component) {
-      const IndexSet dofs = DoFTools::extract_boundary_dofs(
-        dof_handler,
-        fe.component_mask(FEValuesExtractors::Scalar(component)),
-        {BoundaryId::joint});
-      std::vector<std::pair<double, types::global_dof_index>> by_z;
-      for (const auto dof : dofs)
-        by_z.emplace_back(support_points[dof][1], dof);
-      std::sort(by_z.begin(), by_z.end());
-      return by_z;
-    };
-    const auto radial = on_contact(0);
-    const auto axial  = on_contact(1);
+    // their support points, so both lists name the same points); a ring
+    // in a stack has the points of its bore's joint first.
+    const auto on_contact
+      = [&](const unsigned int component, const types::boundary_id id) {
+          const IndexSet dofs = DoFTools::extract_boundary_dofs(
+            dof_handler,
+            fe.component_mask(FEValuesExtractors::Scalar(component)),
+            {id});
+          std::vector<std::pair<double, types::global_dof_index>> by_z;
+          for (const auto dof : dofs)
+            by_z.emplace_back(support_points[dof][1], dof);
+          std::sort(by_z.begin(), by_z.end());
+          return by_z;
+        };
+    auto radial          = on_contact(0, BoundaryId::inner_joint);
+    auto axial           = on_contact(1, BoundaryId::inner_joint);
+    n_inner_joint_points = radial.size();
+    {
+      const auto outer_radial = on_contact(0, BoundaryId::joint);
+      const auto outer_axial  = on_contact(1, BoundaryId::joint);
+      radial.insert(radial.end(), outer_radial.begin(), outer_radial.end());
+      axial.insert(axial.end(), outer_axial.begin(), outer_axial.end());
+    }
     AssertThrow(radial.size() == axial.size(),
                 ExcMessage("u_r and u_z differ in points on S"));
     interface_dofs.clear();
@@ -387,7 +396,9 @@ namespace coaxfit
     std::vector<unsigned int> n_faces(interface_dofs.size(), 0);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == BoundaryId::joint)
+        if (face->at_boundary()
+            && (face->boundary_id() == BoundaryId::joint
+                || face->boundary_id() == BoundaryId::inner_joint))
           {
             cell->get_dof_indices(local_dof_indices);
             fe_face_values.reinit(cell, face);
@@ -426,10 +437,13 @@ namespace coaxfit
     rotated     = false;
     curved      = false;
     double side = 0.;
+    // (A ring in a stack: each of its two joints on its own.)
     for (unsigned int i = 0; i < normals.size(); ++i)
       {
+        const unsigned int first
+          = i < n_inner_joint_points ? 0 : n_inner_joint_points;
         side += normals[i][0];
-        curved = curved || (normals[i] - normals[0]).norm() > 1e-9;
+        curved = curved || (normals[i] - normals[first]).norm() > 1e-9;
       }
     for (unsigned int i = 0; i < normals.size(); ++i)
       {

@@ -86,11 +86,12 @@ namespace coaxfit
   {
     const double wall = geometry.r_outer - geometry.r_inner;
 
-    // Radial: smallest cells at the contact surface.
+    // Radial: smallest cells at the contact surface (equal cells in a
+    // ring with joints at both radii).
     const std::vector<double> radial
       = graded_spacing(wall,
                        geometry.radial_cells,
-                       geometry.grading_ratio,
+                       geometry.inner_joint ? 1. : geometry.grading_ratio,
                        geometry.contact_at_outer_radius);
 
     // Axial: over the contact, smallest cells at the end of contact; beyond
@@ -156,6 +157,8 @@ namespace coaxfit
           return "end";
         case held:
           return "held";
+        case inner_joint:
+          return "inner joint";
         default:
           return "untagged";
       }
@@ -207,6 +210,10 @@ namespace coaxfit
             else if (std::abs(c[0] - geometry.contact_radius()) < tol
                      && c[1] < geometry.contact_length)
               face->set_boundary_id(BoundaryId::joint);
+            else if (geometry.inner_joint
+                     && std::abs(c[0] - geometry.r_inner) < tol
+                     && c[1] < geometry.contact_length)
+              face->set_boundary_id(BoundaryId::inner_joint);
             else if (std::abs(c[1] - geometry.length) < tol)
               face->set_boundary_id(BoundaryId::end);
             else if (std::abs(c[0] - geometry.r_inner) < tol)

@@ -6,6 +6,7 @@
 #include <coaxfit/parameters/material_library.h>
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/parameter_file.h>
+#include <coaxfit/parameters/parameter_reading.h>
 #include <coaxfit/parameters/parameters.h>
 
 #include <cctype>
@@ -18,37 +19,6 @@
 namespace coaxfit
 {
 
-  namespace
-  {
-    /**
-     * The entries of @p prm declared as required (has_to_be_set) that no
-     * file or override set, with their paths as deal.II joins them
-     * (`Geometry.Hub length`): deal.II writes characters other than
-     * letters and digits as _XX (hexadecimal), turned back here.
-     */
-    std::set<std::string>
-    entries_not_set(const ParameterHandler &prm)
-    {
-      std::set<std::string> entries;
-      for (const std::string &mangled : prm.get_entries_wrongly_not_set())
-        {
-          std::string entry;
-          for (std::size_t i = 0; i < mangled.size(); ++i)
-            if (mangled[i] == '_' && i + 2 < mangled.size()
-                && std::isxdigit(static_cast<unsigned char>(mangled[i + 1]))
-                && std::isxdigit(static_cast<unsigned char>(mangled[i + 2])))
-              {
-                entry += static_cast<char>(
-                  std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
-                i += 2;
-              }
-            else
-              entry += mangled[i];
-          entries.insert(entry);
-        }
-      return entries;
-    }
-  } // namespace
 
   namespace
   {
@@ -240,50 +210,6 @@ namespace coaxfit
       return name.empty() ? std::string("default") : name;
     }
 
-    /** Split `A/B/Name` into its parts. */
-    std::vector<std::string>
-    split_path(const std::string &path)
-    {
-      std::vector<std::string> parts;
-      std::size_t              start = 0;
-      while (true)
-        {
-          const std::size_t slash = path.find('/', start);
-          parts.push_back(path.substr(start, slash - start));
-          if (slash == std::string::npos)
-            return parts;
-          start = slash + 1;
-        }
-    }
-
-    /** Set @p path = @p value in @p prm as `--set` does. */
-    void
-    set_entry(ParameterHandler  &prm,
-              const std::string &path,
-              const std::string &value)
-    {
-      const std::vector<std::string> parts = split_path(path);
-      if (parts.size() < 2)
-        throw InputError("--set " + path + "=" + value
-                         + ": expected Section/Name=value");
-      try
-        {
-          for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-            prm.enter_subsection(parts[i]);
-          prm.set(parts.back(), value);
-          for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-            prm.leave_subsection();
-        }
-      catch (const InputError &)
-        {
-          throw;
-        }
-      catch (const std::exception &exc)
-        {
-          throw InputError("--set " + path + "=" + value + ": "
-                           + one_line_message(exc));
-        }
-    }
   } // namespace
 
 
@@ -1296,45 +1222,7 @@ namespace coaxfit
     parameters.files_read = files_read;
     ParameterHandler prm;
     parameters.declare_parameters(prm);
-    try
-      {
-        prm.parse_input(filename, "", false, false);
-      }
-    catch (const InputError &)
-      {
-        throw;
-      }
-    catch (const std::exception &exc)
-      {
-        // deal.II's messages about a line already name the file; they
-        // name an entry without its subsection, which is added.
-        std::string       message = one_line_message(exc);
-        const std::size_t at      = message.find("Line <");
-        const std::size_t of      = message.find("> of file <");
-        const std::size_t named   = message.find("for the entry named ");
-        const std::string current = "in the current subsection";
-        const std::size_t where   = message.find(current);
-        if (at != std::string::npos && of != std::string::npos
-            && (named != std::string::npos || where != std::string::npos))
-          {
-            const std::size_t file_end = message.find('>', of + 11);
-            const std::string file
-              = message.substr(of + 11, file_end - of - 11);
-            const std::string section = subsection_at_line(
-              file, std::stoi(message.substr(at + 6, of - at - 6)));
-            if (!section.empty() && named != std::string::npos)
-              message = message.substr(0, named + 20) + section + "/"
-                        + message.substr(named + 20);
-            else if (where != std::string::npos)
-              message.replace(where,
-                              current.size(),
-                              section.empty() ? "at the top level" :
-                                                "in subsection " + section);
-          }
-        throw InputError(message.find("of file <") != std::string::npos ?
-                           message :
-                           "in parameter file '" + filename + "': " + message);
-      }
+    parse_parameter_file(prm, filename);
 
     for (const auto &[path, value] : overrides)
       set_entry(prm, path, value);
@@ -1369,17 +1257,9 @@ namespace coaxfit
     complete_scene(parameters, missing);
     if (!missing.empty())
       {
-        std::string list;
-        for (std::string entry : missing)
-          {
-            // The prm syntax joins the path with '/'.
-            for (char &c : entry)
-              if (c == '.')
-                c = '/';
-            list += (list.empty() ? "" : ", ") + entry;
-          }
         throw InputError("parameter file '" + filename
-                         + "' does not give the scene entries " + list
+                         + "' does not give the scene entries "
+                         + entry_list(missing)
                          + " (the geometry, interference and materials have "
                            "no defaults: set them in the file or with "
                            "--set; a Material Name gives E and nu, a Fit/ISO "

@@ -3,6 +3,7 @@
 #include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/material_library.h>
 #include <coaxfit/parameters/parameter_checks.h>
+#include <coaxfit/parameters/parameter_reading.h>
 #include <coaxfit/parameters/parameters.h>
 
 #include <cmath>
@@ -12,56 +13,6 @@ namespace coaxfit
 {
   namespace
   {
-    /**
-     * Fill the entries of @p material that @p missing lists (E, nu) or that
-     * are unknown (0) from its Name; drop E and nu from @p missing.
-     */
-    void
-    fill_material(Material              &material,
-                  const std::string     &path,
-                  std::set<std::string> &missing)
-    {
-      const MaterialData *data = find_material(material.name);
-      // deal.II names the entries with '.' between the sections.
-      const std::string prefix = "Material." + path + ".";
-      material.E_given         = missing.count(prefix + "E") == 0;
-      if (material.temperature_limit > 0.)
-        material.temperature_limit_reason
-          = "Material/" + path + "/Temperature limit";
-      if (material.kind_text == "brittle")
-        material.kind = MaterialKind::brittle;
-      else if (material.kind_text == "polymer")
-        material.kind = MaterialKind::polymer;
-      else if (material.kind_text == "auto" && data != nullptr)
-        material.kind = data->kind;
-      else
-        material.kind = MaterialKind::metal;
-      if (data == nullptr)
-        return;
-      material.family = data->family;
-      if (missing.erase(prefix + "E") > 0)
-        material.E = data->E;
-      if (missing.erase(prefix + "nu") > 0)
-        material.nu = data->nu;
-      if (material.yield_strength == 0.)
-        material.yield_strength = data->yield_strength;
-      if (material.tensile_strength == 0.)
-        material.tensile_strength = data->tensile_strength;
-      if (material.density == 0.)
-        material.density = data->density;
-      if (material.thermal_expansion == 0.)
-        material.thermal_expansion = data->thermal_expansion;
-      if (material.cooling_expansion == 0.)
-        material.cooling_expansion = data->cooling_expansion;
-      // parameters.prm writes the library's limit back as given.
-      if (material.temperature_limit == 0.
-          || material.temperature_limit == data->temperature_limit)
-        {
-          material.temperature_limit        = data->temperature_limit;
-          material.temperature_limit_reason = data->limit_reason;
-        }
-    }
-
     /**
      * Every case a run computes must stay in the linear (small strain)
      * range; a clearance (U_w <= 0) is a state like any other.

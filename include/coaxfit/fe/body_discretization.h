@@ -276,6 +276,17 @@ namespace coaxfit
     {
       return points;
     }
+    /**
+     * The number of interface points on the bore's joint of a ring in a
+     * stack (BoundaryId::inner_joint); they come first, those of the
+     * outer joint after them. 0 for a body with one joint.
+     */
+    unsigned int
+    n_inner_interface_points() const
+    {
+      return n_inner_joint_points;
+    }
+
     /** Number of interface points. */
     unsigned int
     n_interface_points() const
@@ -427,6 +438,7 @@ namespace coaxfit
     SparseMatrix<double>      stiffness_matrix;
 
     std::vector<types::global_dof_index> interface_dofs;
+    unsigned int                         n_inner_joint_points = 0;
     std::vector<types::global_dof_index> interface_axial_dofs;
     std::vector<double>                  interface_z_coordinates;
     std::vector<Point<2>>                points;

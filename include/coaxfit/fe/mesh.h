@@ -31,6 +31,12 @@ namespace coaxfit
      * SectionId::free, a section's untagged surface).
      */
     constexpr types::boundary_id held = 7;
+    /**
+     * The bore of a ring in the middle of a stack of several bodies where it
+     * meets the body inside it: its second joint (the first, `joint`, is
+     * its outer surface).
+     */
+    constexpr types::boundary_id inner_joint = 8;
 
     /** The name of @p id for messages and output ("joint", "bore", ...). */
     const char *
@@ -52,6 +58,12 @@ namespace coaxfit
     double length         = 1.; ///< half length (mm)
     double contact_length = 1.; ///< 0 < contact_length <= length (mm)
     bool   contact_at_outer_radius = true;
+    /**
+     * A ring in the middle of a stack: a joint on its outer radius
+     * (contact_at_outer_radius) and another, BoundaryId::inner_joint, on
+     * its bore over the same contact length.
+     */
+    bool inner_joint = false;
 
     unsigned int axial_cells        = 12;  ///< over the contact length
     unsigned int radial_cells       = 10;  ///< across the wall

@@ -1,0 +1,162 @@
+#ifndef coaxfit_stack_fit_h
+#define coaxfit_stack_fit_h
+
+#include <coaxfit/coupling/stack_coupling.h>
+#include <coaxfit/fe/body_discretization.h>
+#include <coaxfit/parameters/stack_parameters.h>
+#include <coaxfit/solvers/body_solver.h>
+#include <coaxfit/solvers/condensed_body.h>
+
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * The figures of one joint of a stack after joining: its pressure in the
+   * assembly and alone (its two bodies with the others removed), the
+   * plane-stress compound-cylinder estimates of both, and what a designer
+   * asks of it.
+   */
+  struct JointFigures
+  {
+    std::string  name;
+    double       diameter;                    ///< mm
+    double       diametral_interference;      ///< mm
+    double       p_mid, p_mean, p_min, p_max; ///< MPa, in the assembly
+    bool         closed;                      ///< every point in contact
+    double       contact_length;              ///< mm, full length in contact
+    unsigned int separated_points;
+    double       alone_p_mid, alone_p_mean; ///< MPa, the joint alone
+    unsigned int alone_steps;          ///< staggered steps of the joint alone
+    double       lame_p, lame_alone_p; ///< plane-stress estimates (MPa)
+    double       friction_coefficient; ///< 0: not given
+    double       torque_capacity;      ///< N m (friction given)
+  };
+
+  /**
+   * The radial displacement of a reported surface (Assembly/Report
+   * surfaces) after joining, over its nodes along the axis.
+   */
+  struct SurfaceFigures
+  {
+    std::string name;                 ///< `<body> bore` or `<body> outer`
+    double      radius;               ///< mm, of the drawing
+    double      u_mean, u_min, u_max; ///< mm (mean weighted by length)
+  };
+
+  /**
+   * An assembly of several coaxial plain rings (Assembly/Bodies): one
+   * Triangulation<2> and axisymmetric elasticity operator per body, each
+   * joint's points shared by the meshes of its two bodies, every body
+   * condensed onto its joint points (a body in the middle onto both of
+   * its surfaces: its 2 x 2 block compliance couples its joints). The
+   * joints' contact is solved all at once, by the staggered process
+   * (StackCoupling) or monolithically (solve_stack_contact()); then every
+   * body's field, each joint alone, the plane-stress estimates and the
+   * results (summary.json, contact_pressure_<joint>.csv, a VTU per body
+   * and solution.pvd, convergence.csv, parameters.prm), written
+   * atomically.
+   */
+  class StackFit
+  {
+  public:
+    explicit StackFit(const StackParameters &parameters);
+
+    /** Mesh, assemble and factorize every body; condense each. */
+    void
+    setup_system();
+
+    /**
+     * Solve the contact of all joints (Solver/Method); progress lines to
+     * @p progress if not null. Returns whether it converged.
+     */
+    bool
+    solve(std::ostream *progress);
+
+    /** Each body's field and the figures of every joint and surface. */
+    void
+    postprocess();
+
+    /** Write the results into @p directory (a staging directory). */
+    void
+    output_results(const std::string &directory) const;
+
+    /**
+     * The whole run for the command line: set up, solve, print the joint
+     * table to @p out, write the results atomically. Returns the exit
+     * code (0, or 2 if the process did not converge).
+     */
+    int
+    run(std::ostream &out, bool progress);
+
+    const std::vector<JointFigures> &
+    joint_figures() const
+    {
+      return joints_out;
+    }
+
+    const std::vector<SurfaceFigures> &
+    surface_figures() const
+    {
+      return surfaces_out;
+    }
+
+    const StackState &
+    state() const
+    {
+      return solution;
+    }
+
+    const std::vector<StackJoint> &
+    joints() const
+    {
+      return stack_joints;
+    }
+
+    /** The condensed compliance of body @p b on its joint points. */
+    const FullMatrix<double> &
+    compliance(unsigned int b) const
+    {
+      return condensed[b]->get_compliance();
+    }
+
+    unsigned int
+    n_steps() const
+    {
+      return steps;
+    }
+
+  private:
+    /** The two bodies of joint @p k alone: their contact, and steps. */
+    StackState
+    joint_alone(unsigned int k, unsigned int &staggered_steps) const;
+
+    /** The radius and nodal u_r along the surface @p name. */
+    SurfaceFigures
+    surface(const std::string &name) const;
+
+    const StackParameters                           &parameters;
+    std::vector<std::unique_ptr<BodyDiscretization>> bodies;
+    std::vector<std::unique_ptr<BodySolver>>         solvers;
+    std::vector<std::unique_ptr<CondensedBody>>      condensed;
+    std::vector<StackJoint>                          stack_joints;
+    std::vector<double>                              alpha;
+    StackState                                       solution;
+    std::vector<Vector<double>>                      fields;
+    std::vector<StackState>                          alone;
+    std::vector<JointFigures>                        joints_out;
+    std::vector<SurfaceFigures>                      surfaces_out;
+    std::vector<std::pair<double, double>>           history;
+    bool                                             converged        = false;
+    unsigned int                                     steps            = 0;
+    unsigned int                                     body_solves      = 0;
+    unsigned int                                     active_set_steps = 0;
+    std::map<std::string, double>                    timing;
+  };
+} // namespace coaxfit
+
+#endif

@@ -1,0 +1,160 @@
+#ifndef coaxfit_stack_parameters_h
+#define coaxfit_stack_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <coaxfit/parameters/parameters.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace coaxfit
+{
+  using namespace dealii;
+
+  /**
+   * One plain ring of a stack, `Geometry/<body>`: a cylinder or tube of the
+   * drawing (diameters and full length in mm), centred on the common
+   * mid-plane.
+   */
+  struct RingDrawing
+  {
+    double inner_diameter = 0.; ///< 0: solid (the innermost body only)
+    double outer_diameter = 0.;
+    double length         = 0.;
+
+    /** Declare the entries of `Geometry/<body>` for the body @p name. */
+    void
+    declare_parameters(ParameterHandler &prm, const std::string &name);
+  };
+
+  /**
+   * The fit of one joint of a stack, `Fit/<inner>-<outer>` (or the
+   * entries given directly in `Fit`, which every joint without its own
+   * takes).
+   */
+  struct JointFit
+  {
+    double diametral_interference = 0.; ///< mm; negative: a clearance
+    double friction_coefficient   = 0.; ///< 0: not given (no torque figures)
+
+    /** Declare the entries of a `Fit` subsection (@p what: for whom). */
+    void
+    declare_parameters(ParameterHandler &prm, const std::string &what);
+  };
+
+  /** How the staggered process of a stack visits its joints. */
+  enum class StackOrdering
+  {
+    gauss_seidel, ///< joint by joint, inside out, each with the newest data
+    jacobi        ///< every body at once from the same data
+  };
+
+  /** The accelerator of a stack's fixed point over all joints. */
+  enum class StackAccelerator
+  {
+    none,
+    aitken,
+    iqn_ils
+  };
+
+  /**
+   * The parameters of an assembly of several coaxial plain rings (a
+   * compound cylinder, a sleeve between shaft and hub, a bushing in a
+   * housing), named inside out in `Assembly/Bodies`. The file is read in
+   * two passes: the body list first (assembly_bodies()), then the
+   * subsections the list implies (read_stack_parameters()).
+   */
+  struct StackParameters
+  {
+    /** `Assembly/Bodies`, inside out. */
+    std::vector<std::string> bodies;
+    /** `Geometry/<body>` of each body. */
+    std::vector<RingDrawing> rings;
+    /** `Material/<body>` of each body. */
+    std::vector<Material> materials;
+    /** The fit given directly in `Fit`. */
+    JointFit default_fit;
+    /** `Fit/<inner>-<outer>` of each joint as declared. */
+    std::vector<JointFit> joint_entries;
+    /** The fit each joint uses (its own entries, else default_fit's). */
+    std::vector<JointFit> fits;
+    /** Surfaces whose radial displacement is reported (`<body> bore`). */
+    std::vector<std::string> report_surfaces;
+
+    MeshParameters   mesh;
+    SolverMethod     method      = SolverMethod::staggered;
+    StackOrdering    ordering    = StackOrdering::gauss_seidel;
+    StackAccelerator accelerator = StackAccelerator::iqn_ils;
+    double           alpha       = 0.; ///< 0: each joint's Winkler alpha
+    double           tolerance   = 1e-8;
+    unsigned int     max_steps   = 200;
+    bool             unilateral  = true;
+    std::string      directory;
+    bool             write_vtu    = true;
+    bool             print_timing = true;
+
+    std::string case_name = "default";
+    std::string used_prm; ///< the parameters as read, for parameters.prm
+
+    /** The number of joints (bodies - 1). */
+    unsigned int
+    n_joints() const
+    {
+      return bodies.size() - 1;
+    }
+
+    /** The name of joint @p k: `<inner>-<outer>`. */
+    std::string
+    joint_name(unsigned int k) const
+    {
+      return bodies[k] + "-" + bodies[k + 1];
+    }
+
+    /** The joint's diameter: the outer diameter of its inner body (mm). */
+    double
+    joint_diameter(unsigned int k) const
+    {
+      return rings[k].outer_diameter;
+    }
+
+    /** Declare every entry for the bodies in @p bodies (sized first). */
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Check the scene: the rings meet (each inner diameter is the previous
+     * outer one), equal lengths, and the ranges; an InputError naming the
+     * entry otherwise.
+     */
+    void
+    validate() const;
+
+    /** Output/Directory, or output/<case name>. */
+    std::string
+    output_directory() const
+    {
+      return directory.empty() ? "output/" + case_name : directory;
+    }
+  };
+
+  /**
+   * The body list `Assembly/Bodies` of the parameter file @p filename with
+   * the overrides @p overrides (the first pass: every other entry skipped);
+   * empty if the file gives none (a file of today's Shaft and Hub).
+   * Refuses unknown or repeated names and fewer than two bodies.
+   */
+  std::vector<std::string>
+  assembly_bodies(
+    const std::string                                      &filename,
+    const std::vector<std::pair<std::string, std::string>> &overrides);
+
+  /** The second pass: every entry of the stack of @p filename. */
+  StackParameters
+  read_stack_parameters(
+    const std::string                                      &filename,
+    const std::vector<std::pair<std::string, std::string>> &overrides);
+} // namespace coaxfit
+
+#endif

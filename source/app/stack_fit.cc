@@ -1,0 +1,406 @@
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <coaxfit/app/stack_fit.h>
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/coupling/scene.h>
+#include <coaxfit/design/compound_cylinders.h>
+#include <coaxfit/io/result_directory.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <numeric>
+#include <set>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** Seconds since @p start. */
+    double
+    seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                           - start)
+        .count();
+    }
+  } // namespace
+
+
+
+  StackFit::StackFit(const StackParameters &parameters)
+    : parameters(parameters)
+  {}
+
+
+
+  void
+  StackFit::setup_system()
+  {
+    const auto         start = std::chrono::steady_clock::now();
+    const unsigned int N     = parameters.bodies.size();
+    for (unsigned int b = 0; b < N; ++b)
+      {
+        const RingDrawing &ring = parameters.rings[b];
+        BodyGeometry       g;
+        g.r_inner                 = ring.inner_diameter / 2.;
+        g.r_outer                 = ring.outer_diameter / 2.;
+        g.length                  = ring.length / 2.;
+        g.contact_length          = ring.length / 2.;
+        g.contact_at_outer_radius = b + 1 < N;
+        g.inner_joint             = b > 0 && b + 1 < N;
+        g.axial_cells             = parameters.mesh.axial_cells;
+        g.radial_cells            = parameters.mesh.radial_cells;
+        g.grading_ratio           = parameters.mesh.grading_ratio;
+        g.global_refinements      = parameters.mesh.global_refinements;
+        bodies.push_back(
+          std::make_unique<BodyDiscretization>(parameters.bodies[b],
+                                               g,
+                                               parameters.materials[b],
+                                               parameters.mesh.degree));
+        bodies.back()->setup_system();
+        bodies.back()->assemble_system();
+        solvers.push_back(std::make_unique<BodySolver>(*bodies.back()));
+        condensed.push_back(std::make_unique<CondensedBody>(*solvers.back()));
+      }
+
+    // Each joint's points: the inner body's outer surface, which must be
+    // the outer body's bore point by point (equal lengths and settings).
+    stack_joints.clear();
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      {
+        const BodyDiscretization &in = *bodies[k], &out = *bodies[k + 1];
+        StackJoint                joint;
+        joint.name           = parameters.joint_name(k);
+        joint.interference   = parameters.fits[k].diametral_interference / 2.;
+        const unsigned int n = out.n_inner_interface_points() > 0 ?
+                                 out.n_inner_interface_points() :
+                                 out.n_interface_points();
+        const unsigned int at_in  = in.n_inner_interface_points();
+        const unsigned int at_out = 0;
+        if (in.n_interface_points() - at_in != n)
+          throw std::logic_error("the meshes of " + joint.name
+                                 + " do not share their joint points");
+        joint.weights.reinit(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double z_in  = in.interface_z()[at_in + i];
+            const double z_out = out.interface_z()[at_out + i];
+            if (std::abs(z_in - z_out) > 1e-9 * parameters.rings[0].length)
+              throw std::logic_error("the meshes of " + joint.name
+                                     + " do not share their joint points");
+            joint.z.push_back(z_in);
+            joint.weights[i] = in.interface_weights()[at_in + i];
+          }
+        stack_joints.push_back(joint);
+      }
+
+    // Each joint's Winkler alpha k_o / (k_i + k_o) from the mean diagonal
+    // compliances of its sides (the outer side's traction weight).
+    alpha.clear();
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      {
+        if (parameters.alpha > 0.)
+          {
+            alpha.push_back(parameters.alpha);
+            continue;
+          }
+        const FullMatrix<double> &C_in  = compliance(k),
+                                 &C_out = compliance(k + 1);
+        const unsigned int at_in        = bodies[k]->n_inner_interface_points();
+        double             k_in = 0., k_out = 0.;
+        for (unsigned int i = 0; i < stack_joints[k].n_points(); ++i)
+          {
+            k_in += std::abs(C_in(at_in + i, at_in + i));
+            k_out += std::abs(C_out(i, i));
+          }
+        alpha.push_back(k_out / (k_in + k_out));
+      }
+    timing["setup"] = seconds_since(start);
+  }
+
+
+
+  StackState
+  StackFit::joint_alone(const unsigned int k,
+                        unsigned int      &staggered_steps) const
+  {
+    // The sides' compliances on this joint's points only: the other
+    // surfaces free.
+    const unsigned int n     = stack_joints[k].n_points();
+    const unsigned int at_in = bodies[k]->n_inner_interface_points();
+    FullMatrix<double> C_in(n, n), C_out(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          C_in(i, j)  = compliance(k)(at_in + i, at_in + j);
+          C_out(i, j) = compliance(k + 1)(i, j);
+        }
+    const std::vector<StackJoint> pair      = {stack_joints[k]};
+    unsigned int                  set_steps = 0;
+    const StackState              state     = solve_stack_contact({C_in, C_out},
+                                                 pair,
+                                                 parameters.unilateral,
+                                                 set_steps);
+
+    // The staggered process of the pair alone, for the step count.
+    CondensedBody                    inner(C_in), outer(C_out);
+    std::vector<InterfaceOperator *> ops = {&inner, &outer};
+    StackCoupling coupling(ops, pair, parameters, {alpha[k]});
+    coupling.run(nullptr);
+    staggered_steps = coupling.n_steps();
+    return state;
+  }
+
+
+
+  bool
+  StackFit::solve(std::ostream *progress)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    if (parameters.method == SolverMethod::monolithic)
+      {
+        std::vector<FullMatrix<double>> C;
+        for (const auto &c : condensed)
+          C.push_back(c->get_compliance());
+        solution  = solve_stack_contact(C,
+                                       stack_joints,
+                                       parameters.unilateral,
+                                       active_set_steps);
+        converged = true;
+        steps     = 0;
+      }
+    else
+      {
+        std::vector<InterfaceOperator *> ops;
+        for (const auto &c : condensed)
+          ops.push_back(c.get());
+        StackCoupling coupling(ops, stack_joints, parameters, alpha);
+        converged   = coupling.run(progress);
+        solution    = coupling.state();
+        steps       = coupling.n_steps();
+        body_solves = coupling.n_body_solves();
+        history     = coupling.history();
+      }
+    timing["coupling"] = seconds_since(start);
+    return converged;
+  }
+
+
+
+  SurfaceFigures
+  StackFit::surface(const std::string &name) const
+  {
+    unsigned int b = 0;
+    while (name != parameters.bodies[b] + " bore"
+           && name != parameters.bodies[b] + " outer")
+      ++b;
+    const bool   bore = name == parameters.bodies[b] + " bore";
+    const double R    = (bore ? parameters.rings[b].inner_diameter :
+                                parameters.rings[b].outer_diameter)
+                     / 2.;
+    const BodyDiscretization                   &body = *bodies[b];
+    std::map<types::global_dof_index, Point<2>> points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
+                                         body.get_dof_handler(),
+                                         points);
+    std::vector<std::pair<double, double>> by_z; // (z, u_r)
+    const auto                            &fe = body.get_dof_handler().get_fe();
+    std::vector<types::global_dof_index>   dofs(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>      seen;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (fe.system_to_component_index(i).first == 0
+              && std::abs(points[dofs[i]][0] - R) < 1e-9 * R
+              && seen.insert(dofs[i]).second)
+            by_z.emplace_back(points[dofs[i]][1], fields[b][dofs[i]]);
+      }
+    std::sort(by_z.begin(), by_z.end());
+    SurfaceFigures s;
+    s.name   = name;
+    s.radius = R;
+    s.u_min = s.u_max = by_z.front().second;
+    double integral   = 0.;
+    for (unsigned int i = 0; i < by_z.size(); ++i)
+      {
+        s.u_min = std::min(s.u_min, by_z[i].second);
+        s.u_max = std::max(s.u_max, by_z[i].second);
+        if (i > 0)
+          integral += 0.5 * (by_z[i].second + by_z[i - 1].second)
+                      * (by_z[i].first - by_z[i - 1].first);
+      }
+    const double length = by_z.back().first - by_z.front().first;
+    s.u_mean            = length > 0. ? integral / length : s.u_min;
+    return s;
+  }
+
+
+
+  void
+  StackFit::postprocess()
+  {
+    const auto         start = std::chrono::steady_clock::now();
+    const unsigned int N     = bodies.size();
+    const StackLayout  layout(stack_joints);
+
+    // Each body's field under the forces of its joints.
+    fields.clear();
+    for (unsigned int b = 0; b < N; ++b)
+      {
+        const unsigned int n = layout.n_points(b);
+        Vector<double>     force(n);
+        for (const unsigned int k : {b - 1, b})
+          if (k < stack_joints.size())
+            for (unsigned int i = 0; i < stack_joints[k].n_points(); ++i)
+              force[layout.offset(b, k) + i] = solution.force[k][i];
+        fields.push_back(solvers[b]->solve_field(std::vector<bool>(n, false),
+                                                 Vector<double>(n),
+                                                 force));
+      }
+
+    // The plane-stress compound cylinders: the stack, and each joint alone.
+    std::vector<CompoundCylinders::Ring> rings;
+    std::vector<double>                  U;
+    for (unsigned int b = 0; b < N; ++b)
+      rings.push_back({parameters.rings[b].inner_diameter,
+                       parameters.rings[b].outer_diameter,
+                       parameters.materials[b].E,
+                       parameters.materials[b].nu});
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      U.push_back(parameters.fits[k].diametral_interference);
+    const CompoundCylinders lame(rings, U);
+
+    alone.clear();
+    joints_out.clear();
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      {
+        const StackJoint &joint = stack_joints[k];
+        JointFigures      f;
+        f.name                   = joint.name;
+        f.diameter               = parameters.joint_diameter(k);
+        f.diametral_interference = parameters.fits[k].diametral_interference;
+        const Vector<double> p   = solution.pressure(stack_joints, k);
+        f.p_mid                  = p[0];
+        f.p_min                  = *std::min_element(p.begin(), p.end());
+        f.p_max                  = *std::max_element(p.begin(), p.end());
+        f.p_mean = solution.force[k].mean_value() * solution.force[k].size()
+                   / (joint.weights.mean_value() * joint.weights.size());
+        f.separated_points = std::count(solution.contact[k].begin(),
+                                        solution.contact[k].end(),
+                                        false);
+        f.closed           = f.separated_points == 0;
+        double z_contact   = 0.;
+        for (unsigned int i = 0; i < joint.n_points(); ++i)
+          if (solution.contact[k][i])
+            z_contact = std::max(z_contact, joint.z[i]);
+        f.contact_length
+          = f.separated_points == joint.n_points() ? 0. : 2. * z_contact;
+
+        alone.push_back(joint_alone(k, f.alone_steps));
+        const Vector<double> pa = alone.back().pressure({joint}, 0);
+        f.alone_p_mid           = pa[0];
+        f.alone_p_mean          = alone.back().force[0].mean_value() * pa.size()
+                         / (joint.weights.mean_value() * joint.weights.size());
+        f.lame_p = lame.pressure(k);
+        f.lame_alone_p
+          = CompoundCylinders({rings[k], rings[k + 1]}, {U[k]}).pressure(0);
+        f.friction_coefficient = parameters.fits[k].friction_coefficient;
+        // T = nu p_mean pi D^2 l / 2 (N mm), in N m.
+        f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI
+                            * f.diameter * f.diameter
+                            * parameters.rings[0].length / 2. / 1000.;
+        joints_out.push_back(f);
+      }
+    surfaces_out.clear();
+    for (const std::string &name : parameters.report_surfaces)
+      surfaces_out.push_back(surface(name));
+    timing["postprocess"] = seconds_since(start);
+  }
+
+
+
+  int
+  StackFit::run(std::ostream &out, const bool progress)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    out << "coaxfit: " << parameters.case_name << ", "
+        << parameters.bodies.size() << " bodies (";
+    for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
+      out << (b > 0 ? ", " : "") << parameters.bodies[b];
+    out << "), " << parameters.n_joints() << " joints\n";
+    // The directory is checked before any work.
+    std::set<std::string> files
+      = {"summary.json", "parameters.prm", "convergence.csv", "solution.pvd"};
+    for (unsigned int k = 0; k < parameters.n_joints(); ++k)
+      files.insert("contact_pressure_" + parameters.joint_name(k) + ".csv");
+    for (const std::string &b : parameters.bodies)
+      files.insert(Body::key_of(b) + ".vtu");
+    ResultDirectory directory(parameters.output_directory(), files);
+
+    setup_system();
+    unsigned int n_dofs = 0;
+    for (const auto &b : bodies)
+      n_dofs += b->get_dof_handler().n_dofs();
+    out << "  " << n_dofs << " DoFs in " << bodies.size() << " bodies, "
+        << (parameters.method == SolverMethod::monolithic ?
+              "monolithic" :
+              std::string("staggered, ")
+                + (parameters.ordering == StackOrdering::jacobi ?
+                     "jacobi" :
+                     "gauss-seidel"))
+        << '\n';
+    const bool ok = solve(progress ? &out : nullptr);
+    if (!ok)
+      {
+        out << "  not converged in " << steps << " steps\n";
+        return 2;
+      }
+    if (parameters.method == SolverMethod::monolithic)
+      out << "  contact problem solved, " << active_set_steps
+          << " active set step(s)\n";
+    else
+      out << "  converged in " << steps << " steps (" << body_solves
+          << " body solves)\n";
+    postprocess();
+
+    // The joints: in the assembly, alone (the joint's two bodies with
+    // the others removed), and the plane-stress estimates of both.
+    out << "\n  joint          D mm    p(0) MPa  mean MPa   min MPa   max MPa"
+           "  contact   | alone: mean | plane stress: stack  alone\n";
+    for (const JointFigures &f : joints_out)
+      out << "  " << std::left << std::setw(12) << f.name << std::right
+          << std::fixed << std::setprecision(1) << std::setw(7) << f.diameter
+          << std::setprecision(4) << std::setw(11) << f.p_mid << std::setw(10)
+          << f.p_mean << std::setw(10) << f.p_min << std::setw(10) << f.p_max
+          << "  " << std::left << std::setw(9)
+          << (f.closed ? "closed" :
+                         std::to_string(f.separated_points) + " open")
+          << std::right << " |" << std::setw(12) << f.alone_p_mean << " |"
+          << std::setw(20) << f.lame_p << std::setw(9) << f.lame_alone_p << '\n'
+          << std::defaultfloat;
+    for (const JointFigures &f : joints_out)
+      if (f.friction_coefficient > 0.)
+        out << "  " << f.name << ": torque capacity " << std::setprecision(6)
+            << f.torque_capacity << " N m (friction coefficient "
+            << f.friction_coefficient << ")\n";
+    for (const SurfaceFigures &s : surfaces_out)
+      out << "  " << s.name << " (D " << 2. * s.radius << " mm): u_r mean "
+          << std::setprecision(6) << s.u_mean << " mm, min " << s.u_min
+          << ", max " << s.u_max << "; diameter change " << 2. * s.u_mean
+          << " mm\n";
+
+    timing["total"] = seconds_since(start);
+    output_results(directory.staging_path());
+    directory.commit(out);
+    out << "  results in " << parameters.output_directory() << '\n';
+    if (parameters.print_timing)
+      out << "  wall time " << std::setprecision(3) << seconds_since(start)
+          << " s\n";
+    return 0;
+  }
+} // namespace coaxfit

@@ -1,0 +1,169 @@
+#include <coaxfit/app/stack_fit.h>
+#include <coaxfit/coupling/scene.h>
+#include <coaxfit/io/result_writers.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace coaxfit
+{
+  namespace
+  {
+    using Json = nlohmann::ordered_json;
+
+    /** @p x, or null if it is not finite (JSON has no NaN). */
+    Json
+    number_or_null(const double x)
+    {
+      return std::isfinite(x) ? Json(x) : Json(nullptr);
+    }
+
+    /** The pressure figures of a joint. */
+    Json
+    joint_json(const JointFigures &f)
+    {
+      Json j;
+      j["name"]                   = f.name;
+      j["diameter"]               = f.diameter;
+      j["diametral_interference"] = f.diametral_interference;
+      j["pressure"]               = {{"at_mid_plane", number_or_null(f.p_mid)},
+                                     {"mean", number_or_null(f.p_mean)},
+                                     {"min", number_or_null(f.p_min)},
+                                     {"max", number_or_null(f.p_max)}};
+      j["contact"]                = {{"closed", f.closed},
+                                     {"length", f.contact_length},
+                                     {"separated_points", f.separated_points}};
+      j["alone"]                  = {{"pressure",
+                                      {{"at_mid_plane", number_or_null(f.alone_p_mid)},
+                                       {"mean", number_or_null(f.alone_p_mean)}}},
+                                     {"staggered_steps", f.alone_steps}};
+      j["plane_stress_estimate"]
+        = {{"pressure", f.lame_p}, {"pressure_alone", f.lame_alone_p}};
+      if (f.friction_coefficient > 0.)
+        j["design"] = {{"friction_coefficient", f.friction_coefficient},
+                       {"torque_capacity", number_or_null(f.torque_capacity)}};
+      return j;
+    }
+  } // namespace
+
+
+
+  void
+  StackFit::output_results(const std::string &directory) const
+  {
+    const unsigned int N = bodies.size();
+
+    // parameters.prm: repeats the run.
+    {
+      const std::string name = directory + "/parameters.prm";
+      std::ofstream     out  = open_result_file(name);
+      out << parameters.used_prm;
+      close_result_file(out, name);
+    }
+
+    // contact_pressure_<joint>.csv: the lumped pressure at each point.
+    for (unsigned int k = 0; k < stack_joints.size(); ++k)
+      {
+        const StackJoint    &joint = stack_joints[k];
+        const Vector<double> p     = solution.pressure(stack_joints, k);
+        const Vector<double> pa    = alone[k].pressure({joint}, 0);
+        check_values_for_output(p, "contact_pressure_" + joint.name + ".csv");
+        const std::string name
+          = directory + "/contact_pressure_" + joint.name + ".csv";
+        std::ofstream out = open_result_file(name);
+        out << "z_mm,pressure_MPa,contact,pressure_alone_MPa\n";
+        for (unsigned int i = 0; i < joint.n_points(); ++i)
+          out << joint.z[i] << ',' << p[i] << ','
+              << (solution.contact[k][i] ? 1 : 0) << ',' << pa[i] << '\n';
+        close_result_file(out, name);
+      }
+
+    // convergence.csv: the residuals of every staggered step.
+    {
+      const std::string name = directory + "/convergence.csv";
+      std::ofstream     out  = open_result_file(name);
+      out << "step,displacement_residual,traction_residual\n";
+      for (unsigned int s = 0; s < history.size(); ++s)
+        out << s + 1 << ',' << history[s].first << ',' << history[s].second
+            << '\n';
+      close_result_file(out, name);
+    }
+
+    // A VTU per body and solution.pvd grouping them.
+    if (parameters.write_vtu)
+      {
+        for (unsigned int b = 0; b < N; ++b)
+          {
+            const std::string file
+              = Body::key_of(parameters.bodies[b]) + ".vtu";
+            check_values_for_output(fields[b], file);
+            std::ofstream out = open_result_file(directory + "/" + file);
+            bodies[b]->output_results(fields[b], out, b);
+            close_result_file(out, directory + "/" + file);
+          }
+        const std::string name = directory + "/solution.pvd";
+        std::ofstream     out  = open_result_file(name);
+        out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+               "version=\"0.1\" byte_order=\"LittleEndian\">\n<Collection>\n";
+        for (unsigned int b = 0; b < N; ++b)
+          out << "<DataSet timestep=\"0\" group=\"\" part=\"" << b
+              << "\" name=\"" << Body::key_of(parameters.bodies[b])
+              << "\" file=\"" << Body::key_of(parameters.bodies[b])
+              << ".vtu\"/>\n";
+        out << "</Collection>\n</VTKFile>\n";
+        close_result_file(out, name);
+      }
+
+    // summary.json, last.
+    Json j;
+    j["case"]      = parameters.case_name;
+    j["assembly"]  = {{"bodies", parameters.bodies}};
+    j["converged"] = converged;
+    Json method;
+    method["method"] = parameters.method == SolverMethod::monolithic ?
+                         "monolithic" :
+                         "staggered";
+    if (parameters.method == SolverMethod::staggered)
+      {
+        method["ordering"] = parameters.ordering == StackOrdering::jacobi ?
+                               "jacobi" :
+                               "gauss-seidel";
+        method["accelerator"]
+          = parameters.accelerator == StackAccelerator::none   ? "none" :
+            parameters.accelerator == StackAccelerator::aitken ? "aitken" :
+                                                                 "iqn-ils";
+        method["steps"]       = steps;
+        method["body_solves"] = body_solves;
+        method["alpha"]       = alpha;
+      }
+    else
+      method["active_set_steps"] = active_set_steps;
+    j["coupling"]    = method;
+    Json joints_json = Json::array();
+    for (const JointFigures &f : joints_out)
+      joints_json.push_back(joint_json(f));
+    j["joints"] = joints_json;
+    if (!surfaces_out.empty())
+      {
+        Json surfaces = Json::array();
+        for (const SurfaceFigures &s : surfaces_out)
+          surfaces.push_back(
+            {{"name", s.name},
+             {"diameter", 2. * s.radius},
+             {"u_r", {{"mean", s.u_mean}, {"min", s.u_min}, {"max", s.u_max}}},
+             {"diameter_change", 2. * s.u_mean}});
+        j["surfaces"] = surfaces;
+      }
+    Json dofs;
+    for (unsigned int b = 0; b < N; ++b)
+      dofs[Body::key_of(parameters.bodies[b])]
+        = bodies[b]->get_dof_handler().n_dofs();
+    j["mesh"]   = {{"n_dofs", dofs}, {"degree", parameters.mesh.degree}};
+    j["timing"] = timing;
+    const std::string name = directory + "/summary.json";
+    std::ofstream     out  = open_result_file(name);
+    out << j.dump(2) << '\n';
+    close_result_file(out, name);
+  }
+} // namespace coaxfit

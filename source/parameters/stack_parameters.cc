@@ -1,0 +1,506 @@
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/parameters/parameter_checks.h>
+#include <coaxfit/parameters/parameter_file.h>
+#include <coaxfit/parameters/parameter_reading.h>
+#include <coaxfit/parameters/stack_parameters.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** @p text without leading and trailing blanks. */
+    std::string
+    trim(const std::string &text)
+    {
+      const std::size_t first = text.find_first_not_of(" \t");
+      if (first == std::string::npos)
+        return "";
+      return text.substr(first, text.find_last_not_of(" \t") + 1 - first);
+    }
+
+    /** @p text in lower case. */
+    std::string
+    lower(std::string text)
+    {
+      for (char &c : text)
+        c = std::tolower(static_cast<unsigned char>(c));
+      return text;
+    }
+
+    /** The names of a comma separated `Assembly/Bodies`, checked. */
+    std::vector<std::string>
+    split_bodies(const std::string &list)
+    {
+      std::vector<std::string> names;
+      if (trim(list).empty())
+        return names;
+      std::istringstream    in(list);
+      std::string           name;
+      std::set<std::string> seen;
+      while (std::getline(in, name, ','))
+        {
+          name = trim(name);
+          bool valid_chars
+            = !name.empty()
+              && std::isalpha(static_cast<unsigned char>(name[0]));
+          for (const char c : name)
+            valid_chars
+              = valid_chars
+                && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+          if (!valid_chars)
+            throw InputError(
+              "parameter Assembly/Bodies: '" + name
+              + "' is not a body name (allowed: letters, digits and _, "
+                "beginning with a letter; names separated by commas)");
+          if (!seen.insert(lower(name)).second)
+            throw InputError("parameter Assembly/Bodies: the body '" + name
+                             + "' is listed twice (each body once, inside "
+                               "out; names differing in case only count as "
+                               "the same: they name the same files)");
+          names.push_back(name);
+        }
+      if (names.size() < 2 || names.size() > 20)
+        throw InputError("parameter Assembly/Bodies = " + trim(list)
+                         + ": allowed 2 to 20 bodies, listed inside out");
+      return names;
+    }
+
+    /** Declare `Assembly/Bodies` with the value @p bodies. */
+    void
+    declare_bodies_entry(ParameterHandler &prm, const std::string &bodies)
+    {
+      prm.enter_subsection("Assembly");
+      prm.declare_entry(
+        "Bodies",
+        bodies,
+        Patterns::Anything(),
+        "The coaxial bodies of the assembly, inside out, separated by "
+        "commas (for example Shaft, Sleeve, Hub). Each name is spelled in "
+        "its subsections exactly as here: Material/<body>, Geometry/<body> "
+        "(Inner diameter, Outer diameter, Length of a plain ring) and the "
+        "joint's fit Fit/<inner>-<outer>. Empty: the file describes one "
+        "Shaft in one Hub with the entries of Geometry, Fit and Material "
+        "of today's files. Allowed: 2 to 20 names of letters, digits and "
+        "_, each once.");
+      prm.leave_subsection();
+    }
+  } // namespace
+
+
+
+  void
+  RingDrawing::declare_parameters(ParameterHandler  &prm,
+                                  const std::string &name)
+  {
+    const bool required = true;
+    prm.add_parameter("Inner diameter",
+                      inner_diameter,
+                      "Bore diameter of " + name
+                        + " in mm; 0: solid (the innermost body only). "
+                          "Each body's inner diameter is the outer "
+                          "diameter of the body inside it (the "
+                          "interference is given in Fit). Allowed: 0 to "
+                          "1e6.",
+                      Patterns::Double(0., 1e6),
+                      required);
+    prm.add_parameter("Outer diameter",
+                      outer_diameter,
+                      "Outer diameter of " + name
+                        + " in mm. Allowed: above the inner diameter, up "
+                          "to 1e6.",
+                      Patterns::Double(0., 1e6),
+                      required);
+    prm.add_parameter("Length",
+                      length,
+                      "Full length of " + name
+                        + " in mm, centred on the common mid-plane (all "
+                          "bodies of equal length in this version). "
+                          "Allowed: above 0, up to 1e6.",
+                      Patterns::Double(0., 1e6),
+                      required);
+  }
+
+
+
+  void
+  JointFit::declare_parameters(ParameterHandler &prm, const std::string &what)
+  {
+    const bool required = true;
+    prm.add_parameter("Diametral interference",
+                      diametral_interference,
+                      "Diametral interference U of " + what
+                        + " in mm: the inner body's outer diameter less "
+                          "the outer body's bore. Negative: a clearance "
+                          "(contact may be lost). Allowed: |U| <= 1 % of "
+                          "the joint diameter (the linear range).",
+                      Patterns::Double(-1e4, 1e4),
+                      required);
+    prm.add_parameter("Friction coefficient",
+                      friction_coefficient,
+                      "Friction coefficient nu_r of " + what
+                        + " in the circumferential direction, for the "
+                          "torque capacity T = nu_r p_mean pi D^2 l / 2 "
+                          "(DIN 7190-1); the joint itself is frictionless "
+                          "in the model. 0: not given (no torque figures). "
+                          "Allowed: 0 to 1.",
+                      Patterns::Double(0., 1.));
+  }
+
+
+
+  void
+  StackParameters::declare_parameters(ParameterHandler &prm)
+  {
+    std::string list;
+    for (const std::string &b : bodies)
+      list += (list.empty() ? "" : ", ") + b;
+    declare_bodies_entry(prm, list);
+    prm.enter_subsection("Assembly");
+    prm.add_parameter(
+      "Report surfaces",
+      report_surfaces,
+      "Surfaces whose radial displacement after joining is reported (mean, "
+      "min, max and the change of diameter): `<body> bore` or `<body> "
+      "outer`, separated by commas, e.g. `Bushing bore` for the running "
+      "clearance of a pressed-in bushing. Empty: none.",
+      Patterns::List(Patterns::Anything()));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Geometry");
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        prm.enter_subsection(bodies[b]);
+        rings[b].declare_parameters(prm, bodies[b]);
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        prm.enter_subsection(bodies[b]);
+        materials[b].declare_parameters(prm, bodies[b]);
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Fit");
+    default_fit.declare_parameters(prm,
+                                   "every joint that does not give its own "
+                                   "(Fit/<inner>-<outer>)");
+    for (unsigned int k = 0; k < n_joints(); ++k)
+      {
+        prm.enter_subsection(joint_name(k));
+        joint_entries[k].declare_parameters(prm, "the joint " + joint_name(k));
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh");
+    prm.add_parameter("Axial cells",
+                      mesh.axial_cells,
+                      "Number of cells along the half length of every "
+                      "body before global refinement, shrinking towards "
+                      "the end by the grading ratio. Allowed: 1 to 10000.",
+                      Patterns::Integer(1, 10000));
+    prm.add_parameter("Radial cells",
+                      mesh.radial_cells,
+                      "Number of cells across each body's wall before "
+                      "global refinement (graded towards the joint of the "
+                      "innermost and outermost body, equal in a body with "
+                      "two joints). Allowed: 1 to 10000.",
+                      Patterns::Integer(1, 10000));
+    prm.add_parameter("Grading ratio",
+                      mesh.grading_ratio,
+                      "Ratio of neighbouring cell sizes. Allowed: 1 to 10.",
+                      Patterns::Double(1., 10.));
+    prm.add_parameter("Global refinements",
+                      mesh.global_refinements,
+                      "Uniform refinements of every body's mesh. Allowed: "
+                      "0 to 12.",
+                      Patterns::Integer(0, 12));
+    prm.add_parameter("Degree",
+                      mesh.degree,
+                      "Polynomial degree of the FE_Q elements. Allowed: 1 "
+                      "to 4.",
+                      Patterns::Integer(1, 4));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    // The selections are declared as entries and read back by name.
+    prm.declare_entry(
+      "Method",
+      method == SolverMethod::monolithic ? "monolithic" : "staggered",
+      Patterns::Selection("staggered|monolithic"),
+      "staggered: the alternating Dirichlet-Neumann process over all joints "
+      "(Coupling/Ordering). monolithic: every joint's contact problem at "
+      "once on the bodies' condensed interface operators (the reference).");
+    prm.leave_subsection();
+    prm.enter_subsection("Coupling");
+    prm.declare_entry(
+      "Ordering",
+      ordering == StackOrdering::jacobi ? "jacobi" : "gauss-seidel",
+      Patterns::Selection("gauss-seidel|jacobi"),
+      "How a step of the staggered process visits the joints. "
+      "gauss-seidel: joint by joint, inside out, each Neumann and "
+      "Dirichlet step of a joint's two bodies with the newest forces of "
+      "the neighbouring joints. jacobi: the visits of all joints at once "
+      "(concurrently, as many threads as cores) from the same forces.");
+    prm.declare_entry(
+      "Accelerator",
+      accelerator == StackAccelerator::none   ? "none" :
+      accelerator == StackAccelerator::aitken ? "aitken" :
+                                                "iqn-ils",
+      Patterns::Selection("none|aitken|iqn-ils"),
+      "Acceleration of the fixed point over the forces of all joints "
+      "together: none, aitken (dynamic relaxation) or iqn-ils (interface "
+      "quasi-Newton, inverse least squares). The history restarts when a "
+      "contact point opens or closes.");
+    prm.add_parameter("Alpha",
+                      alpha,
+                      "Relaxation weight alpha of every joint (the outer "
+                      "body's traction weight, as for two bodies). 0: "
+                      "each joint's Winkler alpha k_o / (k_i + k_o) from "
+                      "the mean diagonal compliances of its two sides. "
+                      "Allowed: 0 <= alpha < 1.",
+                      Patterns::Double(0., 1.));
+    prm.add_parameter("Tolerance",
+                      tolerance,
+                      "Relative residual at which the process stops: the "
+                      "displacement mismatch over the largest "
+                      "interference and the traction mismatch over the "
+                      "largest pressure, at every joint. Allowed: 1e-14 "
+                      "to 0.1.",
+                      Patterns::Double(1e-14, 0.1));
+    prm.add_parameter("Max steps",
+                      max_steps,
+                      "Largest number of steps. Allowed: 1 to 100000.",
+                      Patterns::Integer(1, 100000));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    prm.add_parameter("Unilateral",
+                      unilateral,
+                      "true: the surfaces of a joint may separate (no "
+                      "tension); false: every joint stays closed (bonded "
+                      "radially).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.add_parameter("Directory",
+                      directory,
+                      "Directory for the results (created if missing). "
+                      "Empty: output/<base name of the parameter file>.",
+                      Patterns::Anything());
+    prm.add_parameter("Write vtu",
+                      write_vtu,
+                      "Write one VTU file per body and solution.pvd "
+                      "grouping them (for ParaView).");
+    prm.add_parameter("Print timing",
+                      print_timing,
+                      "Print the wall times at the end of the run (they "
+                      "are always in summary.json).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StackParameters::validate() const
+  {
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        const std::string  path = "Geometry/" + bodies[b] + "/";
+        const RingDrawing &r    = rings[b];
+        require(r.length > 0., path + "Length", r.length, "above 0 mm");
+        require(r.outer_diameter > r.inner_diameter,
+                path + "Outer diameter",
+                r.outer_diameter,
+                "above " + path + "Inner diameter = " + number(r.inner_diameter)
+                  + " mm");
+        if (b > 0)
+          {
+            require(r.inner_diameter > 0.,
+                    path + "Inner diameter",
+                    r.inner_diameter,
+                    "above 0 mm: only the innermost body (" + bodies[0]
+                      + ") may be solid");
+            const double below = rings[b - 1].outer_diameter;
+            if (std::abs(r.inner_diameter - below) > 1e-9 * below)
+              throw InputError(
+                "parameter " + path
+                + "Inner diameter = " + number(r.inner_diameter)
+                + ": the bodies " + bodies[b - 1] + " and " + bodies[b]
+                + (r.inner_diameter < below ? " overlap" : " do not meet")
+                + " (Geometry/" + bodies[b - 1]
+                + "/Outer diameter = " + number(below)
+                + " mm); the diameters of the drawing must be equal, the "
+                  "interference is given in Fit/"
+                + joint_name(b - 1) + "/Diametral interference");
+            const double L = rings[0].length;
+            if (std::abs(r.length - L) > 1e-9 * L)
+              throw InputError(
+                "parameter " + path + "Length = " + number(r.length)
+                + ": allowed only " + number(L) + " mm (Geometry/" + bodies[0]
+                + "/Length): this version models stacks of rings of equal "
+                  "length");
+          }
+        materials[b].validate("Material/" + bodies[b]);
+      }
+    for (unsigned int k = 0; k < n_joints(); ++k)
+      {
+        const double D = joint_diameter(k);
+        const double U = fits[k].diametral_interference;
+        if (std::abs(U) > 0.01 * D)
+          throw InputError("parameter Fit/" + joint_name(k)
+                           + "/Diametral interference = " + number(U)
+                           + ": allowed |U| <= 1 % of the joint diameter "
+                           + number(D) + " mm (the linear range)");
+      }
+    for (const std::string &surface : report_surfaces)
+      {
+        bool known = false;
+        for (const std::string &b : bodies)
+          known = known || surface == b + " bore" || surface == b + " outer";
+        if (!known)
+          throw InputError("parameter Assembly/Report surfaces: '" + surface
+                           + "' names no surface (allowed: '<body> bore' or "
+                             "'<body> outer' with a body of "
+                             "Assembly/Bodies)");
+        if (surface == bodies[0] + " bore" && rings[0].inner_diameter == 0.)
+          throw InputError("parameter Assembly/Report surfaces: '" + surface
+                           + "': the body " + bodies[0]
+                           + " is solid (no bore)");
+      }
+    mesh.validate();
+  }
+
+
+
+  std::vector<std::string>
+  assembly_bodies(
+    const std::string                                      &filename,
+    const std::vector<std::pair<std::string, std::string>> &overrides)
+  {
+    std::string list;
+    for (const auto &[path, value] : overrides)
+      if (path == "Assembly/Bodies")
+        list = value;
+    if (!list.empty())
+      return split_bodies(list);
+    std::ifstream in(filename);
+    if (!in)
+      return {}; // the full reading names the file
+    // Only a file that mentions the subsection is parsed twice.
+    std::string line;
+    bool        mentioned = false;
+    while (!mentioned && std::getline(in, line))
+      mentioned = line.find("Assembly") != std::string::npos
+                  || line.find("include") != std::string::npos;
+    if (!mentioned)
+      return {};
+    ParameterHandler prm;
+    declare_bodies_entry(prm, list);
+    try
+      {
+        prm.parse_input(filename, "", true, false);
+      }
+    catch (const std::exception &)
+      {
+        return {}; // the full reading reports what is wrong
+      }
+    prm.enter_subsection("Assembly");
+    list = prm.get("Bodies");
+    prm.leave_subsection();
+    return split_bodies(list);
+  }
+
+
+
+  StackParameters
+  read_stack_parameters(
+    const std::string                                      &filename,
+    const std::vector<std::pair<std::string, std::string>> &overrides)
+  {
+    check_parameter_file(filename);
+    StackParameters p;
+    p.bodies = assembly_bodies(filename, overrides);
+    if (p.bodies.empty())
+      throw InputError("parameter file '" + filename
+                       + "' gives no Assembly/Bodies");
+    p.rings.resize(p.bodies.size());
+    p.materials.resize(p.bodies.size());
+    p.joint_entries.resize(p.n_joints());
+
+    ParameterHandler prm;
+    p.declare_parameters(prm);
+    parse_parameter_file(prm, filename);
+    for (const auto &[path, value] : overrides)
+      set_entry(prm, path, value);
+
+    // The selections, by name.
+    prm.enter_subsection("Solver");
+    p.method = prm.get("Method") == "monolithic" ? SolverMethod::monolithic :
+                                                   SolverMethod::staggered;
+    prm.leave_subsection();
+    prm.enter_subsection("Coupling");
+    p.ordering = prm.get("Ordering") == "jacobi" ? StackOrdering::jacobi :
+                                                   StackOrdering::gauss_seidel;
+    const std::string accelerator = prm.get("Accelerator");
+    p.accelerator = accelerator == "none"   ? StackAccelerator::none :
+                    accelerator == "aitken" ? StackAccelerator::aitken :
+                                              StackAccelerator::iqn_ils;
+    prm.leave_subsection();
+
+    std::set<std::string> missing = entries_not_set(prm);
+    for (unsigned int b = 0; b < p.bodies.size(); ++b)
+      fill_material(p.materials[b], p.bodies[b], missing);
+    const bool default_given = missing.erase("Fit.Diametral interference") == 0;
+    p.fits.clear();
+    for (unsigned int k = 0; k < p.n_joints(); ++k)
+      {
+        const std::string own
+          = "Fit." + p.joint_name(k) + ".Diametral interference";
+        const bool own_given = missing.erase(own) == 0;
+        if (!own_given && !default_given)
+          missing.insert(own);
+        JointFit fit = own_given ? p.joint_entries[k] : p.default_fit;
+        // A friction coefficient given for the joint wins over Fit's.
+        if (p.joint_entries[k].friction_coefficient > 0.)
+          fit.friction_coefficient = p.joint_entries[k].friction_coefficient;
+        else if (fit.friction_coefficient == 0.)
+          fit.friction_coefficient = p.default_fit.friction_coefficient;
+        p.fits.push_back(fit);
+      }
+    if (!missing.empty())
+      {
+        throw InputError("parameter file '" + filename
+                         + "' does not give the scene entries "
+                         + entry_list(missing)
+                         + " (geometry, interference and materials have no "
+                           "defaults; a Material Name gives E and nu, "
+                           "Fit/Diametral interference every joint's "
+                           "interference)");
+      }
+
+    // The case name: the file's base name.
+    std::string base = filename.substr(filename.find_last_of('/') + 1);
+    if (base.size() > 4 && base.substr(base.size() - 4) == ".prm")
+      base.resize(base.size() - 4);
+    p.case_name = base.empty() ? "default" : base;
+    p.validate();
+
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::ShortPRM);
+    p.used_prm = "# coaxfit: the parameters of this run (file '" + filename
+                 + "' with the --set overrides)\n" + text.str();
+    return p;
+  }
+} // namespace coaxfit

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <numeric>
 #include <set>
 
@@ -300,6 +301,24 @@ namespace coaxfit
             z_contact = std::max(z_contact, joint.z[i]);
         f.contact_length
           = f.separated_points == joint.n_points() ? 0. : 2. * z_contact;
+        // The gap of each point from the bodies' own displacements.
+        const Vector<double> u_in
+          = bodies[k]->interface_radial_values(fields[k]);
+        const Vector<double> u_out
+          = bodies[k + 1]->interface_radial_values(fields[k + 1]);
+        f.gap_min = std::numeric_limits<double>::max();
+        f.gap_max = 0.;
+        for (unsigned int i = 0; i < joint.n_points(); ++i)
+          {
+            const double gap
+              = solution.contact[k][i] ?
+                  0. :
+                  2.
+                    * (u_out[layout.offset(k + 1, k) + i]
+                       - u_in[layout.offset(k, k) + i] - joint.interference);
+            f.gap_min = std::min(f.gap_min, gap);
+            f.gap_max = std::max(f.gap_max, gap);
+          }
 
         alone.push_back(joint_alone(k, f.alone_steps));
         const Vector<double> pa = alone.back().pressure({joint}, 0);
@@ -370,10 +389,14 @@ namespace coaxfit
 
     // The joints: in the assembly, alone (the joint's two bodies with
     // the others removed), and the plane-stress estimates of both.
-    out << "\n  joint          D mm    p(0) MPa  mean MPa   min MPa   max MPa"
-           "  contact   | alone: mean | plane stress: stack  alone\n";
+    std::size_t width = 5;
     for (const JointFigures &f : joints_out)
-      out << "  " << std::left << std::setw(12) << f.name << std::right
+      width = std::max(width, f.name.size());
+    out << "\n  " << std::left << std::setw(width) << "joint" << std::right
+        << "   D mm   p(0) MPa  mean MPa   min MPa   max MPa  contact   | "
+           "alone: mean | plane stress: stack  alone\n";
+    for (const JointFigures &f : joints_out)
+      out << "  " << std::left << std::setw(width) << f.name << std::right
           << std::fixed << std::setprecision(1) << std::setw(7) << f.diameter
           << std::setprecision(4) << std::setw(11) << f.p_mid << std::setw(10)
           << f.p_mean << std::setw(10) << f.p_min << std::setw(10) << f.p_max
@@ -383,6 +406,12 @@ namespace coaxfit
           << std::right << " |" << std::setw(12) << f.alone_p_mean << " |"
           << std::setw(20) << f.lame_p << std::setw(9) << f.lame_alone_p << '\n'
           << std::defaultfloat;
+    for (const JointFigures &f : joints_out)
+      if (!f.closed)
+        out << "  " << f.name << ": open at " << f.separated_points << " of "
+            << stack_joints[&f - &joints_out[0]].n_points()
+            << " points, diametral gap left " << std::setprecision(6)
+            << f.gap_min << " to " << f.gap_max << " mm\n";
     for (const JointFigures &f : joints_out)
       if (f.friction_coefficient > 0.)
         out << "  " << f.name << ": torque capacity " << std::setprecision(6)

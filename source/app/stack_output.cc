@@ -33,7 +33,9 @@ namespace coaxfit
                                      {"max", number_or_null(f.p_max)}};
       j["contact"]                = {{"closed", f.closed},
                                      {"length", f.contact_length},
-                                     {"separated_points", f.separated_points}};
+                                     {"separated_points", f.separated_points},
+                                     {"gap_min", f.gap_min},
+                                     {"gap_max", f.gap_max}};
       j["alone"]                  = {{"pressure",
                                       {{"at_mid_plane", number_or_null(f.alone_p_mid)},
                                        {"mean", number_or_null(f.alone_p_mean)}}},

@@ -91,6 +91,51 @@ namespace coaxfit
         "_, each once.");
       prm.leave_subsection();
     }
+
+    /**
+     * Throw an InputError that names what is wrong if @p path enters a
+     * subsection of a body or joint that the body list of @p p does not
+     * have: its first two parts name the subsection (`Fit/A-C`,
+     * `Geometry/X`) when @p is_subsection, else the parts but the last
+     * (`Fit/A-C/Diametral interference`). @p where says where it was
+     * given.
+     */
+    void
+    check_subsection(const StackParameters &p,
+                     const std::string     &path,
+                     const bool             is_subsection,
+                     const std::string     &where)
+    {
+      const std::vector<std::string> parts = split_path(path);
+      if (parts.size() < (is_subsection ? 2 : 3))
+        return;
+      const std::string &section = parts[0], &name = parts[1];
+      std::string        bodies, joints;
+      for (unsigned int b = 0; b < p.bodies.size(); ++b)
+        {
+          bodies += (b > 0 ? ", " : "") + p.bodies[b];
+          if (b + 1 < p.bodies.size())
+            joints += (b > 0 ? ", " : "") + p.joint_name(b);
+        }
+      if (section == "Fit")
+        {
+          for (unsigned int k = 0; k < p.n_joints(); ++k)
+            if (name == p.joint_name(k))
+              return;
+          throw InputError(where + ": the joint fit Fit/" + name
+                           + " names no joint (the joints are the neighbours "
+                             "of Assembly/Bodies, inside out: "
+                           + joints + ")");
+        }
+      if (section == "Geometry" || section == "Material")
+        {
+          if (std::find(p.bodies.begin(), p.bodies.end(), name)
+              == p.bodies.end())
+            throw InputError(where + ": " + section + "/" + name
+                             + " names no body of Assembly/Bodies ("
+                             + bodies + ")");
+        }
+    }
   } // namespace
 
 
@@ -441,9 +486,33 @@ namespace coaxfit
 
     ParameterHandler prm;
     p.declare_parameters(prm);
-    parse_parameter_file(prm, filename);
+    try
+      {
+        parse_parameter_file(prm, filename);
+      }
+    catch (const InputError &error)
+      {
+        // A subsection of a body or joint the list does not have.
+        const std::string message = error.what();
+        const std::string marker  = "no such subsection to be entered: ";
+        const std::size_t at      = message.find(marker);
+        if (at != std::string::npos)
+          {
+            std::string path = message.substr(at + marker.size());
+            path = path.substr(0, path.find_first_of(" \n"));
+            std::replace(path.begin(), path.end(), '.', '/');
+            check_subsection(p,
+                             path,
+                             true,
+                             "in parameter file '" + filename + "'");
+          }
+        throw;
+      }
     for (const auto &[path, value] : overrides)
-      set_entry(prm, path, value);
+      {
+        check_subsection(p, path, false, "--set " + path + "=" + value);
+        set_entry(prm, path, value);
+      }
 
     // The selections, by name.
     prm.enter_subsection("Solver");

@@ -30,6 +30,12 @@ namespace coaxfit
     bool         closed;                      ///< every point in contact
     double       contact_length;              ///< mm, full length in contact
     unsigned int separated_points;
+    /**
+     * The diametral gap 2 (u_outer - u_inner - d) left where the joint is
+     * open, smallest and largest over its points (mm; 0 where closed): a
+     * running clearance after pressing.
+     */
+    double       gap_min, gap_max;
     double       alone_p_mid, alone_p_mean; ///< MPa, the joint alone
     unsigned int alone_steps;          ///< staggered steps of the joint alone
     double       lame_p, lame_alone_p; ///< plane-stress estimates (MPa)

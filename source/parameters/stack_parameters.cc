@@ -132,8 +132,8 @@ namespace coaxfit
           if (std::find(p.bodies.begin(), p.bodies.end(), name)
               == p.bodies.end())
             throw InputError(where + ": " + section + "/" + name
-                             + " names no body of Assembly/Bodies ("
-                             + bodies + ")");
+                             + " names no body of Assembly/Bodies (" + bodies
+                             + ")");
         }
     }
   } // namespace
@@ -499,7 +499,7 @@ namespace coaxfit
         if (at != std::string::npos)
           {
             std::string path = message.substr(at + marker.size());
-            path = path.substr(0, path.find_first_of(" \n"));
+            path             = path.substr(0, path.find_first_of(" \n"));
             std::replace(path.begin(), path.end(), '.', '/');
             check_subsection(p,
                              path,

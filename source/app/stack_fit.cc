@@ -2,6 +2,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <coaxfit/app/resources.h>
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/coupling/scene.h>
@@ -28,6 +29,62 @@ namespace coaxfit
                                            - start)
         .count();
     }
+
+    /**
+     * The geometry and mesh settings of body @p b of @p parameters: a ring
+     * with its joints on the surfaces it shares with its neighbours.
+     */
+    BodyGeometry
+    ring_geometry(const StackParameters &parameters, const unsigned int b)
+    {
+      const unsigned int N    = parameters.bodies.size();
+      const RingDrawing &ring = parameters.rings[b];
+      BodyGeometry       g;
+      g.r_inner                 = ring.inner_diameter / 2.;
+      g.r_outer                 = ring.outer_diameter / 2.;
+      g.length                  = ring.length / 2.;
+      g.contact_length          = ring.length / 2.;
+      g.contact_at_outer_radius = b + 1 < N;
+      g.inner_joint             = b > 0 && b + 1 < N;
+      g.axial_cells             = parameters.mesh.axial_cells;
+      g.radial_cells            = parameters.mesh.radial_cells;
+      g.grading_ratio           = parameters.mesh.grading_ratio;
+      g.global_refinements      = parameters.mesh.global_refinements;
+      return g;
+    }
+
+    /**
+     * Refuse a stack whose matrices, factors and dense compliances would
+     * not fit into the available memory, before any mesh is built.
+     */
+    void
+    check_stack_memory(const StackParameters &parameters)
+    {
+      double needed = 0., points = 0.;
+      for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
+        {
+          const BodyGeometry g = ring_geometry(parameters, b);
+          const double       n_points
+            = predicted_axial_points(g, parameters.mesh.degree)
+              * (g.inner_joint ? 2. : 1.);
+          needed += estimated_memory(predicted_dofs(g, parameters.mesh.degree),
+                                     parameters.mesh.degree)
+                    + 3. * 8. * n_points * n_points;
+          points += n_points;
+        }
+      needed += 2. * 8. * points * points; // the monolithic matrix
+      const double available = available_memory();
+      if (needed > available)
+        throw InputError(
+          "parameter Mesh/Global refinements = "
+          + std::to_string(parameters.mesh.global_refinements) + ": the "
+          + std::to_string(parameters.bodies.size()) + " bodies need about "
+          + std::to_string(static_cast<long>(needed / 1e9 + 0.5))
+          + " GB of memory, more than the "
+          + std::to_string(static_cast<long>(available / 1e9))
+          + " GB available; use fewer Global refinements or Axial/Radial "
+            "cells");
+    }
   } // namespace
 
 
@@ -45,18 +102,7 @@ namespace coaxfit
     const unsigned int N     = parameters.bodies.size();
     for (unsigned int b = 0; b < N; ++b)
       {
-        const RingDrawing &ring = parameters.rings[b];
-        BodyGeometry       g;
-        g.r_inner                 = ring.inner_diameter / 2.;
-        g.r_outer                 = ring.outer_diameter / 2.;
-        g.length                  = ring.length / 2.;
-        g.contact_length          = ring.length / 2.;
-        g.contact_at_outer_radius = b + 1 < N;
-        g.inner_joint             = b > 0 && b + 1 < N;
-        g.axial_cells             = parameters.mesh.axial_cells;
-        g.radial_cells            = parameters.mesh.radial_cells;
-        g.grading_ratio           = parameters.mesh.grading_ratio;
-        g.global_refinements      = parameters.mesh.global_refinements;
+        const BodyGeometry g = ring_geometry(parameters, b);
         bodies.push_back(
           std::make_unique<BodyDiscretization>(parameters.bodies[b],
                                                g,
@@ -359,6 +405,7 @@ namespace coaxfit
       files.insert("contact_pressure_" + parameters.joint_name(k) + ".csv");
     for (const std::string &b : parameters.bodies)
       files.insert(Body::key_of(b) + ".vtu");
+    check_stack_memory(parameters);
     ResultDirectory directory(parameters.output_directory(), files);
 
     setup_system();

@@ -167,6 +167,7 @@ main()
         std::string("--set 'Fit/Sleeve-Hub/Diametral interference=1'"),
         std::string("--set 'Assembly/Report surfaces=Sleeve inside'"),
         std::string("--set 'Assembly/Report surfaces=Shaft bore'"),
+        std::string("--set 'Design/Required torque=500'"),
         std::string(
           "--sweep 'Fit/Sleeve-Hub/Diametral interference=0.05:0.07:3'")})
     {

@@ -7,6 +7,7 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/coupling/scene.h>
 #include <coaxfit/design/compound_cylinders.h>
+#include <coaxfit/fe/body_stress.h>
 #include <coaxfit/io/result_directory.h>
 
 #include <algorithm>
@@ -379,7 +380,34 @@ namespace coaxfit
         f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI
                             * f.diameter * f.diameter
                             * parameters.rings[0].length / 2. / 1000.;
+        f.slip_safety = parameters.required_torque > 0. ?
+                          f.torque_capacity / parameters.required_torque :
+                          0.;
         joints_out.push_back(f);
+      }
+    // Each body's strength: von Mises on its surfaces.
+    bodies_out.clear();
+    for (unsigned int b = 0; b < N; ++b)
+      {
+        BodyFigures f;
+        f.name                = parameters.bodies[b];
+        f.von_mises_mid_plane = f.von_mises_max = 0.;
+        for (const double d : {parameters.rings[b].inner_diameter,
+                               parameters.rings[b].outer_diameter})
+          if (d > 0.)
+            for (const StressState &s :
+                 stresses_along_radius(*bodies[b], fields[b], d / 2.))
+              {
+                f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
+                if (s.z == 0.)
+                  f.von_mises_mid_plane
+                    = std::max(f.von_mises_mid_plane, s.von_mises());
+              }
+        f.yield_strength = parameters.materials[b].yield_strength;
+        f.yield_safety   = f.yield_strength > 0. && f.von_mises_mid_plane > 0. ?
+                             f.yield_strength / f.von_mises_mid_plane :
+                             0.;
+        bodies_out.push_back(f);
       }
     surfaces_out.clear();
     for (const std::string &name : parameters.report_surfaces)
@@ -461,9 +489,29 @@ namespace coaxfit
             << f.gap_min << " to " << f.gap_max << " mm\n";
     for (const JointFigures &f : joints_out)
       if (f.friction_coefficient > 0.)
-        out << "  " << f.name << ": torque capacity " << std::setprecision(6)
-            << f.torque_capacity << " N m (friction coefficient "
-            << f.friction_coefficient << ")\n";
+        {
+          out << "  " << f.name << ": torque capacity " << std::setprecision(6)
+              << f.torque_capacity << " N m (friction coefficient "
+              << f.friction_coefficient << ")";
+          if (f.slip_safety > 0.)
+            out << ", safety against slip " << f.slip_safety << " at "
+                << parameters.required_torque << " N m"
+                << (f.slip_safety < 1. ? ": SLIPS" : "");
+          out << '\n';
+        }
+    for (const BodyFigures &f : bodies_out)
+      {
+        out << "  " << f.name << ": von Mises " << std::setprecision(6)
+            << f.von_mises_mid_plane << " MPa at the mid-plane, "
+            << f.von_mises_max << " MPa at most on its surfaces";
+        if (f.yield_strength > 0.)
+          out << "; safety against yield " << f.yield_safety << " (R_e "
+              << f.yield_strength << " MPa)"
+              << (f.yield_safety < 1. ? ": YIELDS, the elastic answer "
+                                        "does not hold" :
+                                        "");
+        out << '\n';
+      }
     for (const SurfaceFigures &s : surfaces_out)
       out << "  " << s.name << " (D " << 2. * s.radius << " mm): u_r mean "
           << std::setprecision(6) << s.u_mean << " mm, min " << s.u_min

@@ -43,8 +43,13 @@ namespace coaxfit
       j["plane_stress_estimate"]
         = {{"pressure", f.lame_p}, {"pressure_alone", f.lame_alone_p}};
       if (f.friction_coefficient > 0.)
-        j["design"] = {{"friction_coefficient", f.friction_coefficient},
-                       {"torque_capacity", number_or_null(f.torque_capacity)}};
+        {
+          j["design"]
+            = {{"friction_coefficient", f.friction_coefficient},
+               {"torque_capacity", number_or_null(f.torque_capacity)}};
+          if (f.slip_safety > 0.)
+            j["design"]["slip_safety"] = f.slip_safety;
+        }
       return j;
     }
   } // namespace
@@ -145,7 +150,21 @@ namespace coaxfit
     Json joints_json = Json::array();
     for (const JointFigures &f : joints_out)
       joints_json.push_back(joint_json(f));
-    j["joints"] = joints_json;
+    j["joints"]      = joints_json;
+    Json bodies_json = Json::array();
+    for (const BodyFigures &f : bodies_out)
+      {
+        Json b = {{"name", f.name},
+                  {"von_mises_mid_plane", f.von_mises_mid_plane},
+                  {"von_mises_max", f.von_mises_max}};
+        if (f.yield_strength > 0.)
+          {
+            b["yield_strength"] = f.yield_strength;
+            b["yield_safety"]   = f.yield_safety;
+          }
+        bodies_json.push_back(b);
+      }
+    j["bodies"] = bodies_json;
     if (!surfaces_out.empty())
       {
         Json surfaces = Json::array();

@@ -248,6 +248,17 @@ namespace coaxfit
       }
     prm.leave_subsection();
 
+    prm.enter_subsection("Design");
+    prm.add_parameter(
+      "Required torque",
+      required_torque,
+      "Torque in N m that the assembly passes from the innermost to the "
+      "outermost body, through every joint: each joint's safety against "
+      "slip is its torque capacity (with its Friction coefficient) over "
+      "it. 0: none. Allowed: 0 to 1e9.",
+      Patterns::Double(0., 1e9));
+    prm.leave_subsection();
+
     prm.enter_subsection("Mesh");
     prm.add_parameter("Axial cells",
                       mesh.axial_cells,
@@ -409,6 +420,17 @@ namespace coaxfit
                            + ": allowed |U| <= 1 % of the joint diameter "
                            + number(D) + " mm (the linear range)");
       }
+    if (required_torque > 0.)
+      for (unsigned int k = 0; k < n_joints(); ++k)
+        if (fits[k].friction_coefficient == 0.)
+          throw InputError(
+            "parameter Design/Required torque = " + number(required_torque)
+            + ": the joint " + joint_name(k)
+            + " has no friction coefficient (set Fit/Friction coefficient "
+              "or Fit/"
+            + joint_name(k)
+            + "/Friction coefficient, 0 < nu_r <= 1, for its safety "
+              "against slip)");
     for (const std::string &surface : report_surfaces)
       {
         bool known = false;

@@ -41,6 +41,22 @@ namespace coaxfit
     double       lame_p, lame_alone_p; ///< plane-stress estimates (MPa)
     double       friction_coefficient; ///< 0: not given
     double       torque_capacity;      ///< N m (friction given)
+    double       slip_safety;          ///< over Design/Required torque; 0: none
+  };
+
+  /**
+   * The strength figures of one body of a stack after joining: the largest
+   * von Mises stress on its surfaces at the mid-plane (the plane state
+   * DIN 7190's check refers to) and over its surfaces, and the safety
+   * against yield R_e / sigma_vM at the mid-plane.
+   */
+  struct BodyFigures
+  {
+    std::string name;
+    double      von_mises_mid_plane; ///< MPa
+    double      von_mises_max;       ///< MPa, over the body's surfaces
+    double      yield_strength;      ///< MPa; 0: unknown
+    double      yield_safety;        ///< 0: unknown yield strength
   };
 
   /**
@@ -105,6 +121,12 @@ namespace coaxfit
       return joints_out;
     }
 
+    const std::vector<BodyFigures> &
+    body_figures() const
+    {
+      return bodies_out;
+    }
+
     const std::vector<SurfaceFigures> &
     surface_figures() const
     {
@@ -156,6 +178,7 @@ namespace coaxfit
     std::vector<StackState>                          alone;
     std::vector<JointFigures>                        joints_out;
     std::vector<SurfaceFigures>                      surfaces_out;
+    std::vector<BodyFigures>                         bodies_out;
     std::vector<std::pair<double, double>>           history;
     bool                                             converged        = false;
     unsigned int                                     steps            = 0;

@@ -80,6 +80,11 @@ namespace coaxfit
     std::vector<JointFit> joint_entries;
     /** The fit each joint uses (its own entries, else default_fit's). */
     std::vector<JointFit> fits;
+    /**
+     * Design/Required torque (N m): every joint passes it (shaft to hub);
+     * 0: none (no safety against slip).
+     */
+    double required_torque = 0.;
     /** Surfaces whose radial displacement is reported (`<body> bore`). */
     std::vector<std::string> report_surfaces;
 

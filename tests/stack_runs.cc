@@ -161,7 +161,7 @@ main()
         std::string("--set 'Assembly/Bodies=Shaft, Bushing, Hub'"),
         std::string("--set 'Geometry/Sleeve/Inner diameter=59.9'"),
         std::string("--set 'Geometry/Sleeve/Inner diameter=60.5'"),
-        std::string("--set 'Geometry/Sleeve/Length=50'"),
+        std::string("--set 'Geometry/Sleeve/Length=0'"),
         std::string("--set 'Geometry/Sleeve/Inner diameter=0'"),
         std::string("--set 'Fit/Shaft-Hub/Diametral interference=0.03'"),
         std::string("--set 'Fit/Sleeve-Hub/Diametral interference=1'"),

@@ -8,6 +8,7 @@
 #include <coaxfit/coupling/scene.h>
 #include <coaxfit/design/compound_cylinders.h>
 #include <coaxfit/fe/body_stress.h>
+#include <coaxfit/fe/stack_mesh.h>
 #include <coaxfit/io/result_directory.h>
 
 #include <algorithm>
@@ -32,26 +33,52 @@ namespace coaxfit
     }
 
     /**
-     * The geometry and mesh settings of body @p b of @p parameters: a ring
-     * with its joints on the surfaces it shares with its neighbours.
+     * The rings of @p parameters as their meshes are built: one axial grid
+     * for all (stack_axial_spacing()), cut at each ring's half length, the
+     * radial cells graded towards the joint of the innermost and the
+     * outermost ring, equal in a ring with two joints.
      */
-    BodyGeometry
-    ring_geometry(const StackParameters &parameters, const unsigned int b)
+    std::vector<StackRing>
+    stack_rings(const StackParameters &parameters)
     {
-      const unsigned int N    = parameters.bodies.size();
-      const RingDrawing &ring = parameters.rings[b];
-      BodyGeometry       g;
-      g.r_inner                 = ring.inner_diameter / 2.;
-      g.r_outer                 = ring.outer_diameter / 2.;
-      g.length                  = ring.length / 2.;
-      g.contact_length          = ring.length / 2.;
-      g.contact_at_outer_radius = b + 1 < N;
-      g.inner_joint             = b > 0 && b + 1 < N;
-      g.axial_cells             = parameters.mesh.axial_cells;
-      g.radial_cells            = parameters.mesh.radial_cells;
-      g.grading_ratio           = parameters.mesh.grading_ratio;
-      g.global_refinements      = parameters.mesh.global_refinements;
-      return g;
+      const unsigned int  N = parameters.bodies.size();
+      std::vector<double> half_lengths, ends;
+      for (unsigned int b = 0; b < N; ++b)
+        half_lengths.push_back(parameters.rings[b].length / 2.);
+      for (unsigned int k = 0; k + 1 < N; ++k)
+        ends.push_back(std::min(half_lengths[k], half_lengths[k + 1]));
+      const std::vector<double> axial
+        = stack_axial_spacing(half_lengths,
+                              ends,
+                              parameters.mesh.axial_cells,
+                              parameters.mesh.grading_ratio);
+      std::vector<StackRing> rings;
+      for (unsigned int b = 0; b < N; ++b)
+        {
+          StackRing ring;
+          ring.r_inner     = parameters.rings[b].inner_diameter / 2.;
+          ring.r_outer     = parameters.rings[b].outer_diameter / 2.;
+          ring.half_length = half_lengths[b];
+          double z         = 0.;
+          for (unsigned int i = 0;
+               i < axial.size() && z < half_lengths[b] * (1. - 1e-9);
+               ++i)
+            {
+              ring.axial.push_back(axial[i]);
+              z += axial[i];
+            }
+          const bool two_joints = b > 0 && b + 1 < N;
+          ring.radial
+            = graded_spacing(ring.r_outer - ring.r_inner,
+                             parameters.mesh.radial_cells,
+                             two_joints ? 1. : parameters.mesh.grading_ratio,
+                             b + 1 < N);
+          ring.inner_contact      = b > 0 ? ends[b - 1] : 0.;
+          ring.outer_contact      = b + 1 < N ? ends[b] : 0.;
+          ring.global_refinements = parameters.mesh.global_refinements;
+          rings.push_back(ring);
+        }
+      return rings;
     }
 
     /**
@@ -61,15 +88,18 @@ namespace coaxfit
     void
     check_stack_memory(const StackParameters &parameters)
     {
-      double needed = 0., points = 0.;
-      for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
+      double       needed = 0., points = 0.;
+      const double refined = std::pow(2., parameters.mesh.global_refinements);
+      const unsigned int p = parameters.mesh.degree;
+      for (const StackRing &ring : stack_rings(parameters))
         {
-          const BodyGeometry g = ring_geometry(parameters, b);
-          const double       n_points
-            = predicted_axial_points(g, parameters.mesh.degree)
-              * (g.inner_joint ? 2. : 1.);
-          needed += estimated_memory(predicted_dofs(g, parameters.mesh.degree),
-                                     parameters.mesh.degree)
+          const double n_r = p * ring.radial.size() * refined + 1.;
+          const double n_z = p * ring.axial.size() * refined + 1.;
+          const double n_points
+            = n_z * ((ring.inner_contact > 0.) + (ring.outer_contact > 0.));
+          needed += estimated_memory(static_cast<std::size_t>(
+                                       std::min(2. * n_r * n_z, 1e15)),
+                                     p)
                     + 3. * 8. * n_points * n_points;
           points += n_points;
         }
@@ -99,16 +129,25 @@ namespace coaxfit
   void
   StackFit::setup_system()
   {
-    const auto         start = std::chrono::steady_clock::now();
-    const unsigned int N     = parameters.bodies.size();
+    const auto                   start = std::chrono::steady_clock::now();
+    const unsigned int           N     = parameters.bodies.size();
+    const std::vector<StackRing> rings = stack_rings(parameters);
     for (unsigned int b = 0; b < N; ++b)
       {
-        const BodyGeometry g = ring_geometry(parameters, b);
+        const StackRing ring = rings[b];
+        BodyGeometry    g;
+        g.r_inner                 = ring.r_inner;
+        g.r_outer                 = ring.r_outer;
+        g.length                  = ring.half_length;
+        g.contact_at_outer_radius = b + 1 < N;
+        g.inner_joint             = b > 0 && b + 1 < N;
         bodies.push_back(
           std::make_unique<BodyDiscretization>(parameters.bodies[b],
                                                g,
                                                parameters.materials[b],
                                                parameters.mesh.degree));
+        bodies.back()->set_mesh_builder(
+          [ring](Triangulation<2> &t) { make_stack_ring_mesh(t, ring); });
         bodies.back()->setup_system();
         bodies.back()->assemble_system();
         solvers.push_back(std::make_unique<BodySolver>(*bodies.back()));
@@ -116,7 +155,7 @@ namespace coaxfit
       }
 
     // Each joint's points: the inner body's outer surface, which must be
-    // the outer body's bore point by point (equal lengths and settings).
+    // the outer body's bore point by point (one axial grid for all).
     stack_joints.clear();
     for (unsigned int k = 0; k + 1 < N; ++k)
       {
@@ -376,10 +415,11 @@ namespace coaxfit
         f.lame_alone_p
           = CompoundCylinders({rings[k], rings[k + 1]}, {U[k]}).pressure(0);
         f.friction_coefficient = parameters.fits[k].friction_coefficient;
-        // T = nu p_mean pi D^2 l / 2 (N mm), in N m.
+        // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l,
+        // in N m.
         f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI
-                            * f.diameter * f.diameter
-                            * parameters.rings[0].length / 2. / 1000.;
+                            * f.diameter * f.diameter * 2. * joint.z.back() / 2.
+                            / 1000.;
         f.slip_safety = parameters.required_torque > 0. ?
                           f.torque_capacity / parameters.required_torque :
                           0.;

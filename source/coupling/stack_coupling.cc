@@ -172,20 +172,14 @@ namespace coaxfit
   StackCoupling::dirichlet_target(const unsigned int    k,
                                   const Vector<double> &u_inner,
                                   const Vector<double> &u_outer,
-                                  Vector<double>       &du,
-                                  bool                 &changed)
+                                  Vector<double>       &du) const
   {
     const StackJoint &joint = joints[k];
     du.reinit(joint.n_points());
     Vector<double> target(joint.n_points());
     for (unsigned int i = 0; i < joint.n_points(); ++i)
       {
-        du[i] = u_outer[i] - u_inner[i] - joint.interference;
-        if (!current.contact[k][i] && du[i] < 0.)
-          {
-            current.contact[k][i] = true; // it penetrates: closes
-            changed               = true;
-          }
+        du[i]     = u_outer[i] - u_inner[i] - joint.interference;
         target[i] = u_inner[i] + (1. - alpha[k]) * du[i];
       }
     return target;
@@ -196,8 +190,7 @@ namespace coaxfit
   Vector<double>
   StackCoupling::blend(const unsigned int    k,
                        const Vector<double> &p_inner,
-                       const Vector<double> &p_outer,
-                       bool                 &changed)
+                       const Vector<double> &p_outer) const
   {
     Vector<double> next(joints[k].n_points());
     for (unsigned int i = 0; i < next.size(); ++i)
@@ -205,12 +198,6 @@ namespace coaxfit
         if (!current.contact[k][i])
           continue;
         next[i] = p_inner[i] + alpha[k] * (p_outer[i] - p_inner[i]);
-        if (parameters.unilateral && next[i] < 0.)
-          {
-            current.contact[k][i] = false; // it pulls: separates
-            next[i]               = 0.;
-            changed               = true;
-          }
       }
     return next;
   }
@@ -229,6 +216,8 @@ namespace coaxfit
         const double gap
           = current.contact[k][i] ? std::abs(du[i]) : std::max(0., -du[i]);
         step_gap = std::max(step_gap, gap / displacement_scale);
+        if (current.contact[k][i])
+          step_set_gap = std::max(step_set_gap, gap / displacement_scale);
         pressure_scale
           = std::max(pressure_scale,
                      std::max(std::abs(p_inner[i]), std::abs(p_outer[i]))
@@ -259,7 +248,7 @@ namespace coaxfit
         u_inner[i] = u_in[layout.offset(in, k) + i];
         u_outer[i] = u_out[layout.offset(out, k) + i];
       }
-    target[k] = dirichlet_target(k, u_inner, u_outer, visit.du, visit.changed);
+    target[k] = dirichlet_target(k, u_inner, u_outer, visit.du);
 
     // Dirichlet at this joint, the other surfaces still under force.
     data[k] = Data::position;
@@ -273,7 +262,7 @@ namespace coaxfit
           visit.p_inner[i] = f_in[layout.offset(in, k) + i];
           visit.p_outer[i] = f_out[layout.offset(out, k) + i];
         }
-    visit.next = blend(k, visit.p_inner, visit.p_outer, visit.changed);
+    visit.next = blend(k, visit.p_inner, visit.p_outer);
     return visit;
   }
 
@@ -287,9 +276,10 @@ namespace coaxfit
       *progress << "  step   displacement   traction   contact points\n";
     for (steps = 1; steps <= parameters.max_steps; ++steps)
       {
-        step_gap = step_traction            = 0.;
-        bool                        changed = false;
-        const Vector<double>        x       = concatenated(current.force);
+        step_gap = step_set_gap = step_traction = 0.;
+        bool                        changed     = false;
+        const Vector<double>        x           = concatenated(current.force);
+        std::vector<Vector<double>> du(joints.size());
         std::vector<Vector<double>> next(joints.size());
         if (parameters.ordering == StackOrdering::jacobi)
           {
@@ -304,7 +294,7 @@ namespace coaxfit
             for (unsigned int k = 0; k < joints.size(); ++k)
               {
                 measure(k, visits[k].du, visits[k].p_inner, visits[k].p_outer);
-                changed = changed || visits[k].changed;
+                du[k]   = visits[k].du;
                 next[k] = visits[k].next;
               }
           }
@@ -314,7 +304,7 @@ namespace coaxfit
             {
               const Visit visit = visit_joint(k);
               measure(k, visit.du, visit.p_inner, visit.p_outer);
-              changed          = changed || visit.changed;
+              du[k]            = visit.du;
               current.force[k] = visit.next;
               next[k]          = visit.next;
             }
@@ -327,6 +317,26 @@ namespace coaxfit
                             "non-finite residual in step "
                             + std::to_string(steps)
                             + "; try Solver/Method = monolithic");
+        // The contact points are updated once the process has settled for
+        // the current ones (a primal-dual active set over the staggered
+        // solves): a point whose force pulls separates, a separated point
+        // that penetrates closes; the history then restarts.
+        const double set_residual = std::max(step_set_gap, traction);
+        if (parameters.unilateral
+            && set_residual < std::max(parameters.tolerance, 1e-4))
+          for (unsigned int k = 0; k < joints.size(); ++k)
+            for (unsigned int i = 0; i < next[k].size(); ++i)
+              if (current.contact[k][i] && next[k][i] < 0.)
+                {
+                  current.contact[k][i] = false;
+                  changed               = true;
+                }
+              else if (!current.contact[k][i]
+                       && du[k][i] < -1e-12 * displacement_scale)
+                {
+                  current.contact[k][i] = true;
+                  changed               = true;
+                }
         unsigned int n_contact = 0, n_points = 0;
         for (const auto &c : current.contact)
           {
@@ -339,8 +349,8 @@ namespace coaxfit
                     << traction << std::defaultfloat << std::setw(10)
                     << n_contact << "/" << n_points
                     << (changed ? "  (contact changed)" : "") << '\n';
-        if (!changed && step_gap < parameters.tolerance
-            && traction < parameters.tolerance)
+        if (!changed && set_residual < parameters.tolerance
+            && step_gap < parameters.tolerance)
           {
             current.force = next;
             return true;
@@ -354,8 +364,7 @@ namespace coaxfit
         split(g, next);
         for (unsigned int k = 0; k < joints.size(); ++k)
           for (unsigned int i = 0; i < next[k].size(); ++i)
-            if (!current.contact[k][i]
-                || (parameters.unilateral && next[k][i] < 0.))
+            if (!current.contact[k][i])
               next[k][i] = 0.;
         current.force = next;
       }

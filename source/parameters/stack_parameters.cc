@@ -165,9 +165,9 @@ namespace coaxfit
     prm.add_parameter("Length",
                       length,
                       "Full length of " + name
-                        + " in mm, centred on the common mid-plane (all "
-                          "bodies of equal length in this version). "
-                          "Allowed: above 0, up to 1e6.",
+                        + " in mm, centred on the common mid-plane (a "
+                          "joint is as long as the shorter of its two "
+                          "bodies). Allowed: above 0, up to 1e6.",
                       Patterns::Double(0., 1e6),
                       required);
   }
@@ -400,13 +400,6 @@ namespace coaxfit
                 + " mm); the diameters of the drawing must be equal, the "
                   "interference is given in Fit/"
                 + joint_name(b - 1) + "/Diametral interference");
-            const double L = rings[0].length;
-            if (std::abs(r.length - L) > 1e-9 * L)
-              throw InputError(
-                "parameter " + path + "Length = " + number(r.length)
-                + ": allowed only " + number(L) + " mm (Geometry/" + bodies[0]
-                + "/Length): this version models stacks of rings of equal "
-                  "length");
           }
         materials[b].validate("Material/" + bodies[b]);
       }

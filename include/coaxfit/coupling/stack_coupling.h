@@ -104,13 +104,16 @@ namespace coaxfit
    * force of its other joint; with Jacobi ordering the visits of all
    * joints run at once (concurrently) from the same forces. The forces of all
    * joints together are the iterate of one fixed point, accelerated by
-   * Aitken's relaxation or IQN-ILS; a point whose blended force is tensile
-   * separates, a separated point that penetrates closes, and the history
-   * restarts when the contact points change.
+   * Aitken's relaxation or IQN-ILS. The contact points stay fixed until the
+   * process has settled for them (residuals below 1e-4 or the tolerance):
+   * then a point whose blended force pulls separates and a separated point
+   * that penetrates closes (a primal-dual active set over the staggered
+   * solves), and the history restarts.
    *
    * Converged when every joint's displacement mismatch (over the largest
-   * interference) and traction mismatch (over the largest pressure) are
-   * below the tolerance and no contact point changed in the last step.
+   * interference; a separated point's penetration counts) and traction
+   * mismatch (over the largest pressure) are below the tolerance and no
+   * contact point changed in the last step.
    */
   class StackCoupling
   {
@@ -200,14 +203,13 @@ namespace coaxfit
       Vector<double> next;             ///< the blended force
       Vector<double> du;               ///< the Neumann step's mismatch
       Vector<double> p_inner, p_outer; ///< the Dirichlet step's reactions
-      bool           changed = false;  ///< a contact point changed
     };
 
     /**
      * The Neumann and Dirichlet visit of joint @p k (bodies k, k + 1), the
      * other surfaces of its bodies under the current forces of their
-     * joints; updates the contact points of joint @p k only (so that the
-     * visits of a Jacobi step can run at once).
+     * joints; it changes no state but its bodies' factorizations (so that
+     * the visits of a Jacobi step can run at once).
      */
     Visit
     visit_joint(unsigned int k);
@@ -220,26 +222,23 @@ namespace coaxfit
             const Vector<double> &p_outer);
 
     /**
-     * The displacements of a Neumann step at joint @p k: the mismatch du,
-     * the contact points updated (a separated point that penetrates
-     * closes), and the blended Dirichlet position.
+     * The displacements of a Neumann step at joint @p k: the mismatch du
+     * and the blended Dirichlet position.
      */
     Vector<double>
     dirichlet_target(unsigned int          k,
                      const Vector<double> &u_inner,
                      const Vector<double> &u_outer,
-                     Vector<double>       &du,
-                     bool                 &changed);
+                     Vector<double>       &du) const;
 
     /**
-     * The next force of joint @p k from the reactions of a Dirichlet step;
-     * tensile points separate (unilateral).
+     * The next force of joint @p k from the reactions of a Dirichlet step
+     * (0 at separated points).
      */
     Vector<double>
     blend(unsigned int          k,
           const Vector<double> &p_inner,
-          const Vector<double> &p_outer,
-          bool                 &changed);
+          const Vector<double> &p_outer) const;
 
     std::vector<InterfaceOperator *> bodies;
     /** One lock per body: its operator's factorizations are not shared. */
@@ -251,10 +250,10 @@ namespace coaxfit
     StackState                               current;
     double                                   displacement_scale;
     double                                   pressure_scale = 0.;
-    double                                   step_gap = 0., step_traction = 0.;
-    unsigned int                             steps = 0;
-    std::atomic<unsigned int>                body_solves{0};
-    std::vector<std::pair<double, double>>   residuals;
+    double       step_gap = 0., step_set_gap = 0., step_traction = 0.;
+    unsigned int steps = 0;
+    std::atomic<unsigned int>              body_solves{0};
+    std::vector<std::pair<double, double>> residuals;
   };
 
   /**

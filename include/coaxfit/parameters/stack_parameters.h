@@ -130,7 +130,7 @@ namespace coaxfit
 
     /**
      * Check the scene: the rings meet (each inner diameter is the previous
-     * outer one), equal lengths, and the ranges; an InputError naming the
+     * outer one) and the ranges; an InputError naming the
      * entry otherwise.
      */
     void

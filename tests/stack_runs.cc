@@ -153,6 +153,35 @@ main()
               << " (the two-ring answer " << alone_exact << ")\n";
   }
 
+  std::cout << "ISO fits (Fit/ISO fit = H7/s6 for every joint, the "
+               "Shaft-Sleeve joint its own H7/u6):\n";
+  {
+    std::ifstream in(example);
+    std::string   text((std::istreambuf_iterator<char>(in)),
+                     std::istreambuf_iterator<char>());
+    // The example's fits replaced by ISO fits.
+    const std::size_t a = text.find("subsection Fit");
+    const std::size_t b = text.find("subsection Mesh");
+    text.replace(a,
+                 b - a,
+                 "subsection Fit\n  set ISO fit = H7/s6\n  subsection "
+                 "Shaft-Sleeve\n    set ISO fit = H7/u6\n  end\nend\n\n");
+    std::ofstream("iso.prm") << text;
+    for (const std::string fit_case : {"min", "mean", "max"})
+      {
+        std::filesystem::remove_all("iso");
+        const RunResult r
+          = run_coaxfit("iso", "--set Fit/Case=" + fit_case + " iso.prm");
+        const nlohmann::json s = read_summary("iso");
+        std::cout << "  Case " << fit_case << ": exit " << r.exit_code;
+        for (const auto &j : s["joints"])
+          std::cout << "; " << j["name"].get<std::string>() << " U "
+                    << j["diametral_interference"].get<double>() << " mm ("
+                    << j["fit"].get<std::string>() << ")";
+        std::cout << '\n';
+      }
+  }
+
   std::cout << "bad input:\n";
   for (const std::string arguments :
        {std::string("--set 'Assembly/Bodies=Shaft, Sleeve, Shaft'"),
@@ -168,6 +197,8 @@ main()
         std::string("--set 'Assembly/Report surfaces=Sleeve inside'"),
         std::string("--set 'Assembly/Report surfaces=Shaft bore'"),
         std::string("--set 'Design/Required torque=500'"),
+        std::string("--set 'Fit/Shaft-Sleeve/ISO fit=H7/s6'"),
+        std::string("--set 'Fit/Sleeve-Hub/ISO fit=H7/z9'"),
         std::string(
           "--sweep 'Fit/Sleeve-Hub/Diametral interference=0.05:0.07:3'")})
     {

@@ -488,6 +488,11 @@ namespace coaxfit
                      "jacobi" :
                      "gauss-seidel"))
         << '\n';
+    for (unsigned int k = 0; k < parameters.n_joints(); ++k)
+      out << "  " << parameters.joint_name(k) << ": D "
+          << parameters.joint_diameter(k) << " mm, U "
+          << parameters.fits[k].diametral_interference << " mm ("
+          << parameters.fits[k].source << ")\n";
     const bool ok = solve(progress ? &out : nullptr);
     if (!ok)
       {

@@ -106,7 +106,19 @@ namespace coaxfit
               = Body::key_of(parameters.bodies[b]) + ".vtu";
             check_values_for_output(fields[b], file);
             std::ofstream out = open_result_file(directory + "/" + file);
-            bodies[b]->output_results(fields[b], out, b);
+            // The assembled drawing: each ring larger at its outer joint
+            // by that joint's interference (zero at its bore if it has a
+            // joint there), so that warped bodies meet where they touch.
+            double oversize = 0., offset = 0.;
+            if (b + 1 < N)
+              {
+                const double d     = stack_joints[b].interference;
+                const double r_in  = parameters.rings[b].inner_diameter / 2.;
+                const double r_out = parameters.rings[b].outer_diameter / 2.;
+                oversize           = b == 0 ? d / r_out : d / (r_out - r_in);
+                offset             = b == 0 ? 0. : -oversize * r_in;
+              }
+            bodies[b]->output_results(fields[b], out, b, oversize, offset);
             close_result_file(out, directory + "/" + file);
           }
         const std::string name = directory + "/solution.pvd";
@@ -149,7 +161,10 @@ namespace coaxfit
     j["coupling"]    = method;
     Json joints_json = Json::array();
     for (const JointFigures &f : joints_out)
-      joints_json.push_back(joint_json(f));
+      {
+        joints_json.push_back(joint_json(f));
+        joints_json.back()["fit"] = parameters.fits[&f - &joints_out[0]].source;
+      }
     j["joints"]      = joints_json;
     Json bodies_json = Json::array();
     for (const BodyFigures &f : bodies_out)

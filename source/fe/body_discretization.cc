@@ -666,7 +666,8 @@ namespace coaxfit
   BodyDiscretization::output_results(const Vector<double> &solution,
                                      std::ostream         &out,
                                      const unsigned int    body_id,
-                                     const double          oversize) const
+                                     const double          oversize,
+                                     const double          offset) const
   {
     for (const double value : solution)
       if (!std::isfinite(value))
@@ -677,7 +678,7 @@ namespace coaxfit
     if (reduced_volumetric_integration)
       volumetric_field(solution, dof_handler_out, field);
 
-    const AssembledDisplacement assembled("displacement_mm", oversize);
+    const AssembledDisplacement assembled("displacement_mm", oversize, offset);
     const StressPostprocessor   stresses(body_material,
                                        reduced_volumetric_integration,
                                        body_load.thermal_strain);

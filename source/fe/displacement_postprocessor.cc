@@ -3,9 +3,11 @@
 namespace coaxfit
 {
   AssembledDisplacement::AssembledDisplacement(const std::string &name,
-                                               const double       oversize)
+                                               const double       oversize,
+                                               const double       offset)
     : DataPostprocessorVector<2>(name, update_values | update_quadrature_points)
     , oversize(oversize)
+    , offset(offset)
   {}
 
 
@@ -18,7 +20,8 @@ namespace coaxfit
     for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
       {
         computed_quantities[q][0] = inputs.solution_values[q][0]
-                                    + oversize * inputs.evaluation_points[q][0];
+                                    + oversize * inputs.evaluation_points[q][0]
+                                    + offset;
         computed_quantities[q][1] = inputs.solution_values[q][1];
       }
   }

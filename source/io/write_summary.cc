@@ -390,7 +390,31 @@ namespace coaxfit
                      {"lame", ps.lame},
                      {"tensile", ps.min < 0.}};
     j["contact"]  = contact(results);
-    j["design"]   = design(results);
+    // The joints, as a stack of several bodies lists them (here one).
+    {
+      const auto  &bodies = results.scene.bodies;
+      const auto  &joint  = results.scene.joints.front();
+      const Json  &c      = j["contact"];
+      const double D      = 2. * results.parameters.geometry.R1;
+      j["joints"]         = Json::array(
+        {{{"name",
+                   bodies[joint.inner].name() + "-" + bodies[joint.outer].name()},
+                  {"diameter", D},
+                  {"diametral_interference", 2. * results.parameters.geometry.d},
+                  {"pressure",
+                   {{"at_mid_plane", ps.at_mid_plane},
+                    {"mean", ps.mean},
+                    {"min", ps.min},
+                    {"max", ps.max}}},
+                  {"contact",
+                   {{"closed", c["separated_points"] == 0},
+                    {"length",
+                     c["contact_length"].get<double>()
+                       * results.parameters.geometry.mirror_factor()},
+                    {"separated_points", c["separated_points"]}}},
+                  {"fit", results.parameters.fit_limits.source}}});
+    }
+    j["design"] = design(results);
     if (results.parameters.sections && results.parameters.sections->conical())
       j["taper"] = taper(results);
     j["operation"] = operation(results);

@@ -1,4 +1,5 @@
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/parameter_file.h>
 #include <coaxfit/parameters/parameter_reading.h>
@@ -187,6 +188,14 @@ namespace coaxfit
                           "the joint diameter (the linear range).",
                       Patterns::Double(-1e4, 1e4),
                       required);
+    prm.add_parameter("ISO fit",
+                      iso_fit,
+                      "ISO 286 fit of " + what
+                        + " (hole/shaft, e.g. H7/s6) instead of the "
+                          "Diametral interference: its interference at "
+                          "the joint diameter, the smallest, mean or "
+                          "largest by Fit/Case. Empty: none.",
+                      Patterns::Anything());
     prm.add_parameter("Friction coefficient",
                       friction_coefficient,
                       "Friction coefficient nu_r of " + what
@@ -237,6 +246,12 @@ namespace coaxfit
     prm.leave_subsection();
 
     prm.enter_subsection("Fit");
+    prm.add_parameter("Case",
+                      fit_case,
+                      "Which interference of the joints' ISO fits the run "
+                      "takes (every joint the same): min, mean or max. "
+                      "Joints given a Diametral interference take it.",
+                      Patterns::Selection("min|mean|max"));
     default_fit.declare_parameters(prm,
                                    "every joint that does not give its own "
                                    "(Fit/<inner>-<outer>)");
@@ -547,20 +562,70 @@ namespace coaxfit
     for (unsigned int b = 0; b < p.bodies.size(); ++b)
       fill_material(p.materials[b], p.bodies[b], missing);
     const bool default_given = missing.erase("Fit.Diametral interference") == 0;
+    if (default_given && !p.default_fit.iso_fit.empty())
+      throw InputError("parameter Fit/ISO fit = " + p.default_fit.iso_fit
+                       + ": give either Fit/Diametral interference or "
+                         "Fit/ISO fit, not both");
     p.fits.clear();
     for (unsigned int k = 0; k < p.n_joints(); ++k)
       {
+        const std::string path = "Fit/" + p.joint_name(k) + "/";
         const std::string own
           = "Fit." + p.joint_name(k) + ".Diametral interference";
-        const bool own_given = missing.erase(own) == 0;
-        if (!own_given && !default_given)
+        const bool      own_given = missing.erase(own) == 0;
+        const JointFit &entries   = p.joint_entries[k];
+        if (own_given && !entries.iso_fit.empty())
+          throw InputError("parameter " + path + "ISO fit = " + entries.iso_fit
+                           + ": give either " + path
+                           + "Diametral interference or " + path
+                           + "ISO fit, not both");
+        JointFit fit;
+        // The joint's own entry wins over Fit's; an ISO fit over Fit's
+        // interference.
+        if (own_given)
+          {
+            fit        = entries;
+            fit.source = path + "Diametral interference";
+          }
+        else if (!entries.iso_fit.empty() || !p.default_fit.iso_fit.empty())
+          {
+            const bool        mine = !entries.iso_fit.empty();
+            const std::string name
+              = mine ? entries.iso_fit : p.default_fit.iso_fit;
+            const IsoFit iso = [&]() {
+              try
+                {
+                  return iso_fit(name, p.rings[k].outer_diameter);
+                }
+              catch (const InputError &error)
+                {
+                  // iso_fit() names Fit/ISO fit: say which joint.
+                  throw InputError(
+                    std::string(error.what()) + " (joint " + p.joint_name(k)
+                    + ", D " + number(p.rings[k].outer_diameter) + " mm)");
+                }
+            }();
+            const double U_min = 1e-3 * iso.min_interference();
+            const double U_max = 1e-3 * iso.max_interference();
+            fit.diametral_interference
+              = p.fit_case == "min" ? U_min :
+                p.fit_case == "max" ? U_max :
+                                      0.5 * (U_min + U_max);
+            fit.iso_fit = iso.name;
+            fit.source  = (mine ? path : std::string("Fit/")) + "ISO fit "
+                         + iso.name + ", " + p.fit_case;
+          }
+        else if (default_given)
+          {
+            fit        = p.default_fit;
+            fit.source = "Fit/Diametral interference";
+          }
+        else
           missing.insert(own);
-        JointFit fit = own_given ? p.joint_entries[k] : p.default_fit;
         // A friction coefficient given for the joint wins over Fit's.
-        if (p.joint_entries[k].friction_coefficient > 0.)
-          fit.friction_coefficient = p.joint_entries[k].friction_coefficient;
-        else if (fit.friction_coefficient == 0.)
-          fit.friction_coefficient = p.default_fit.friction_coefficient;
+        fit.friction_coefficient = entries.friction_coefficient > 0. ?
+                                     entries.friction_coefficient :
+                                     p.default_fit.friction_coefficient;
         p.fits.push_back(fit);
       }
     if (!missing.empty())

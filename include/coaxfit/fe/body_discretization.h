@@ -171,13 +171,16 @@ namespace coaxfit
      * come from); the stresses sigma_rr_MPa, sigma_zz_MPa, sigma_tt_MPa
      * (hoop), sigma_rz_MPa, von_Mises_MPa; with reduced integration
      * volumetric_stress_MPa; and body_id = @p body_id on every cell
-     * (0 shaft, 1 hub).
+     * (0 shaft, 1 hub; inside out in a stack). The radial @p offset (mm)
+     * is added to displacement_mm everywhere (a ring in the middle of a
+     * stack, drawn larger at its outer joint only).
      */
     void
     output_results(const Vector<double> &solution,
                    std::ostream         &out,
                    unsigned int          body_id  = 0,
-                   double                oversize = 0.) const;
+                   double                oversize = 0.,
+                   double                offset   = 0.) const;
 
     /**
      * The interface values of a field @p solution solved for the data

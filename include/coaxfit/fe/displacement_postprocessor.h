@@ -19,13 +19,20 @@ namespace coaxfit
    * oversize = d / R_F (0 for the hub) moves the shaft's surface to
    * R_F + d + u_1 = R_F + u_2 where the bodies touch: the warped bodies meet
    * at the joint and open only where they separate. The axis (r = 0) does
-   * not move.
+   * not move. A ring in the middle of a stack is drawn larger at its outer
+   * joint only: oversize r + offset, zero at its bore (offset =
+   * -oversize r_inner).
    */
   class AssembledDisplacement : public DataPostprocessorVector<2>
   {
   public:
-    /** @p name of the output vector, @p oversize = d / R_F (or 0). */
-    AssembledDisplacement(const std::string &name, double oversize);
+    /**
+     * @p name of the output vector, @p oversize = d / R_F (or 0), the
+     * radial @p offset (mm) added everywhere.
+     */
+    AssembledDisplacement(const std::string &name,
+                          double             oversize,
+                          double             offset = 0.);
 
     void
     evaluate_vector_field(
@@ -34,6 +41,7 @@ namespace coaxfit
 
   private:
     const double oversize;
+    const double offset;
   };
 } // namespace coaxfit
 

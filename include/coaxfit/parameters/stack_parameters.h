@@ -36,8 +36,10 @@ namespace coaxfit
    */
   struct JointFit
   {
-    double diametral_interference = 0.; ///< mm; negative: a clearance
-    double friction_coefficient   = 0.; ///< 0: not given (no torque figures)
+    double      diametral_interference = 0.; ///< mm; negative: a clearance
+    double      friction_coefficient = 0.; ///< 0: not given (no torque figures)
+    std::string iso_fit;                   ///< `H7/s6`; empty: none
+    std::string source; ///< where the interference comes from (derived)
 
     /** Declare the entries of a `Fit` subsection (@p what: for whom). */
     void
@@ -85,6 +87,11 @@ namespace coaxfit
      * 0: none (no safety against slip).
      */
     double required_torque = 0.;
+    /**
+     * Fit/Case: which interference of the joints' ISO fits (every joint
+     * the same): min, mean or max.
+     */
+    std::string fit_case = "mean";
     /** Surfaces whose radial displacement is reported (`<body> bore`). */
     std::vector<std::string> report_surfaces;
 

@@ -61,15 +61,15 @@ namespace
     std::vector<double> z, p;
   };
 
-  const std::vector<Reference> calculix = {
-    {"Shaft-Sleeve",
-     42.1148,
-     {0., 10., 20., 25., 28.},
-     {51.4522, 49.5967, 38.2252, 29.4249, 25.5754}},
-    {"Sleeve-Hub",
-     27.2040,
-     {0., 5., 10., 15., 18.},
-     {24.9254, 25.0184, 25.5053, 27.3454, 31.3242}}};
+  const std::vector<Reference> calculix
+    = {{"Shaft-Sleeve",
+        42.1148,
+        {0., 10., 20., 25., 28.},
+        {51.4522, 49.5967, 38.2252, 29.4249, 25.5754}},
+       {"Sleeve-Hub",
+        27.2040,
+        {0., 5., 10., 15., 18.},
+        {24.9254, 25.0184, 25.5053, 27.3454, 31.3242}}};
 
   const std::string thin_sleeve = R"(subsection Assembly
   set Bodies = Shaft, Sleeve, Hub
@@ -121,8 +121,8 @@ end
 int
 main()
 {
-  for (const std::string method :
-       {"--set Coupling/Ordering=gauss-seidel", "--set Solver/Method=monolithic"})
+  for (const std::string method : {"--set Coupling/Ordering=gauss-seidel",
+                                   "--set Solver/Method=monolithic"})
     {
       std::filesystem::remove_all("run");
       const RunResult r = run_coaxfit("run", method + " " + example);
@@ -131,8 +131,8 @@ main()
       const nlohmann::json s = read_summary("run");
       for (unsigned int k = 0; k < 2; ++k)
         {
-          const Reference   &ref = calculix[k];
-          const std::string  csv
+          const Reference  &ref = calculix[k];
+          const std::string csv
             = "run/contact_pressure_" + std::string(ref.joint) + ".csv";
           std::cout << "  " << ref.joint << ": mean "
                     << agreement(s["joints"][k]["pressure"]["mean"],
@@ -148,30 +148,26 @@ main()
 
   std::ofstream("thin_sleeve.prm") << thin_sleeve;
   std::vector<nlohmann::json> runs;
-  for (const std::string method :
-       {"--set Coupling/Ordering=gauss-seidel",
-        "--set Coupling/Ordering=jacobi",
-        "--set Solver/Method=monolithic"})
+  for (const std::string method : {"--set Coupling/Ordering=gauss-seidel",
+                                   "--set Coupling/Ordering=jacobi",
+                                   "--set Solver/Method=monolithic"})
     {
       std::filesystem::remove_all("thin");
       const RunResult r = run_coaxfit("thin", method + " thin_sleeve.prm");
       runs.push_back(read_summary("thin")["joints"][0]);
       const nlohmann::json &j = runs.back();
-      std::cout << "thin sleeve, " << method.substr(6) << ": exit "
-                << r.exit_code << ", the shaft's joint open at "
-                << j["contact"]["separated_points"] << " points, p(0) "
-                << agreement(j["pressure"]["at_mid_plane"],
-                             runs[0]["pressure"]["at_mid_plane"],
-                             1e-7)
-                << ", mean "
-                << agreement(j["pressure"]["mean"],
-                             runs[0]["pressure"]["mean"],
-                             1e-7)
-                << " (of the first), gap left at most "
-                << (j["contact"]["gap_max"].get<double>() > 1e-3 ?
-                      "above" :
-                      "below")
-                << " 0.001 mm\n";
+      std::cout
+        << "thin sleeve, " << method.substr(6) << ": exit " << r.exit_code
+        << ", the shaft's joint open at " << j["contact"]["separated_points"]
+        << " points, p(0) "
+        << agreement(j["pressure"]["at_mid_plane"],
+                     runs[0]["pressure"]["at_mid_plane"],
+                     1e-7)
+        << ", mean "
+        << agreement(j["pressure"]["mean"], runs[0]["pressure"]["mean"], 1e-7)
+        << " (of the first), gap left at most "
+        << (j["contact"]["gap_max"].get<double>() > 1e-3 ? "above" : "below")
+        << " 0.001 mm\n";
     }
   std::filesystem::remove_all("thin");
   run_coaxfit("thin", "thin_sleeve.prm");

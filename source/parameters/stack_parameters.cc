@@ -470,6 +470,16 @@ namespace coaxfit
         list = value;
     if (!list.empty())
       return split_bodies(list);
+    // A file the full reading refuses (not a regular file, an include
+    // cycle, too large) is left to it: it names what is wrong.
+    try
+      {
+        check_parameter_file(filename);
+      }
+    catch (const std::exception &)
+      {
+        return {};
+      }
     std::ifstream in(filename);
     if (!in)
       return {}; // the full reading names the file

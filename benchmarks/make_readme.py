@@ -83,6 +83,26 @@ z = 0, 10, 15.
 
 ![time against error](sections_benchmark.png)
 
+## Several bodies (`stack_benchmark.py`)
+
+Stacks of 2, 3, 5 and 8 rings of equal length (a solid steel core D 40 mm
+and rings of 15 mm wall, steel, bronze and aluminium in turn, interferences
+0.03-0.06 mm; the mesh of `prm/examples/three_rings.prm`): the staggered
+process in Gauss-Seidel and Jacobi ordering (IQN-ILS over the forces of all
+joints) and the monolithic contact problem on the condensed compliances;
+steps, body solves, the coupling's wall time and the whole process (median
+of 3), and the largest error of a joint's mean pressure against the
+plane-stress compound-cylinder solution (exact for these stacks in the FE
+limit). steps_alone_max: the most steps any joint takes alone (its two
+bodies, the others removed). Target (issue "Several bodies"):
+three_rings.prm in at most twice the steps of its two-body sub-problems:
+7 against 6. The coupling is milliseconds on condensed operators; the
+process time is the meshes, the factorizations and the condensation.
+
+""" + table("stack_benchmark.csv") + """
+
+![steps and time against the number of bodies](stack_benchmark.png)
+
 ## Interface spectrum and the constant alpha (`alpha_spectrum.py`)
 
 See `doc/alpha_and_interface_spectrum.md`.

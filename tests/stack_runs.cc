@@ -153,6 +153,32 @@ main()
               << " (the two-ring answer " << alone_exact << ")\n";
   }
 
+  std::cout << "the same sleeve loose, bonded radially "
+               "(Contact/Unilateral = false):\n";
+  {
+    const nlohmann::json bonded
+      = run_example("bonded",
+                    "--set 'Fit/Sleeve-Hub/Diametral interference=-0.04' "
+                    "--set Contact/Unilateral=false");
+    const coaxfit::CompoundCylinders two_sided(
+      rings, {0.04, -0.04}, 0., 0., false);
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const nlohmann::json &j = bonded["joints"][k];
+        std::cout << "  " << j["name"].get<std::string>()
+                  << ": the two-sided closed form " << two_sided.pressure(k)
+                  << " MPa; FE mean "
+                  << agreement(j["pressure"]["mean"],
+                               two_sided.pressure(k),
+                               1e-6)
+                  << ", the run's plane-stress column "
+                  << agreement(j["plane_stress_estimate"]["pressure"],
+                               two_sided.pressure(k),
+                               1e-12)
+                  << '\n';
+      }
+  }
+
   std::cout << "ISO fits (Fit/ISO fit = H7/s6 for every joint, the "
                "Shaft-Sleeve joint its own H7/u6):\n";
   {
@@ -187,6 +213,9 @@ main()
        {std::string("--set 'Assembly/Bodies=Shaft, Sleeve, Shaft'"),
         std::string("--set 'Assembly/Bodies=Shaft, Sle-eve, Hub'"),
         std::string("--set 'Assembly/Bodies=Shaft'"),
+        std::string("--set 'Assembly/Bodies='"),
+        std::string("--set 'Assembly/Bodies=Shaft, "
+                    "Sleeve_of_a_very_long_name_that_goes_on_and_on, Hub'"),
         std::string("--set 'Assembly/Bodies=Shaft, Bushing, Hub'"),
         std::string("--set 'Geometry/Sleeve/Inner diameter=59.9'"),
         std::string("--set 'Geometry/Sleeve/Inner diameter=60.5'"),

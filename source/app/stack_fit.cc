@@ -360,7 +360,9 @@ namespace coaxfit
                        parameters.materials[b].nu});
     for (unsigned int k = 0; k + 1 < N; ++k)
       U.push_back(parameters.fits[k].diametral_interference);
-    const CompoundCylinders lame(rings, U);
+    // With bilateral joints (Contact/Unilateral = false) every joint of
+    // the closed form stays closed too.
+    const CompoundCylinders lame(rings, U, 0., 0., parameters.unilateral);
 
     alone.clear();
     joints_out.clear();
@@ -381,12 +383,15 @@ namespace coaxfit
                                         solution.contact[k].end(),
                                         false);
         f.closed           = f.separated_points == 0;
-        double z_contact   = 0.;
-        for (unsigned int i = 0; i < joint.n_points(); ++i)
-          if (solution.contact[k][i])
-            z_contact = std::max(z_contact, joint.z[i]);
-        f.contact_length
-          = f.separated_points == joint.n_points() ? 0. : 2. * z_contact;
+        // The length in contact: each stretch between neighbouring points
+        // counts whole if both touch, half if one does (whole model: twice
+        // the half model's).
+        double in_contact = 0.;
+        for (unsigned int i = 0; i + 1 < joint.n_points(); ++i)
+          in_contact += 0.5
+                        * (solution.contact[k][i] + solution.contact[k][i + 1])
+                        * (joint.z[i + 1] - joint.z[i]);
+        f.contact_length = 2. * in_contact;
         // The gap of each point from the bodies' own displacements.
         const Vector<double> u_in
           = bodies[k]->interface_radial_values(fields[k]);
@@ -411,9 +416,13 @@ namespace coaxfit
         f.alone_p_mid           = pa[0];
         f.alone_p_mean          = alone.back().force[0].mean_value() * pa.size()
                          / (joint.weights.mean_value() * joint.weights.size());
-        f.lame_p = lame.pressure(k);
-        f.lame_alone_p
-          = CompoundCylinders({rings[k], rings[k + 1]}, {U[k]}).pressure(0);
+        f.lame_p       = lame.pressure(k);
+        f.lame_alone_p = CompoundCylinders({rings[k], rings[k + 1]},
+                                           {U[k]},
+                                           0.,
+                                           0.,
+                                           parameters.unilateral)
+                           .pressure(0);
         f.friction_coefficient = parameters.fits[k].friction_coefficient;
         // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l,
         // in N m.
@@ -444,9 +453,12 @@ namespace coaxfit
                     = std::max(f.von_mises_mid_plane, s.von_mises());
               }
         f.yield_strength = parameters.materials[b].yield_strength;
-        f.yield_safety   = f.yield_strength > 0. && f.von_mises_mid_plane > 0. ?
-                             f.yield_strength / f.von_mises_mid_plane :
-                             0.;
+        // A body without stress never yields: its safety is infinite.
+        f.yield_safety = f.yield_strength <= 0. ?
+                           0. :
+                         f.von_mises_mid_plane > 0. ?
+                           f.yield_strength / f.von_mises_mid_plane :
+                           std::numeric_limits<double>::infinity();
         bodies_out.push_back(f);
       }
     surfaces_out.clear();
@@ -514,7 +526,7 @@ namespace coaxfit
       width = std::max(width, f.name.size());
     out << "\n  " << std::left << std::setw(width) << "joint" << std::right
         << "   D mm   p(0) MPa  mean MPa   min MPa   max MPa  contact   | "
-           "alone: mean | plane stress: stack  alone\n";
+           "alone: mean | plane stress: stack   alone\n";
     for (const JointFigures &f : joints_out)
       out << "  " << std::left << std::setw(width) << f.name << std::right
           << std::fixed << std::setprecision(1) << std::setw(7) << f.diameter
@@ -524,7 +536,8 @@ namespace coaxfit
           << (f.closed ? "closed" :
                          std::to_string(f.separated_points) + " open")
           << std::right << " |" << std::setw(12) << f.alone_p_mean << " |"
-          << std::setw(20) << f.lame_p << std::setw(9) << f.lame_alone_p << '\n'
+          << std::setw(20) << f.lame_p << std::setw(10) << f.lame_alone_p
+          << '\n'
           << std::defaultfloat;
     for (const JointFigures &f : joints_out)
       if (!f.closed)
@@ -538,7 +551,7 @@ namespace coaxfit
           out << "  " << f.name << ": torque capacity " << std::setprecision(6)
               << f.torque_capacity << " N m (friction coefficient "
               << f.friction_coefficient << ")";
-          if (f.slip_safety > 0.)
+          if (parameters.required_torque > 0.)
             out << ", safety against slip " << f.slip_safety << " at "
                 << parameters.required_torque << " N m"
                 << (f.slip_safety < 1. ? ": SLIPS" : "");
@@ -550,8 +563,16 @@ namespace coaxfit
             << f.von_mises_mid_plane << " MPa at the mid-plane, "
             << f.von_mises_max << " MPa at most on its surfaces";
         if (f.yield_strength > 0.)
-          out << "; safety against yield " << f.yield_safety << " (R_e "
-              << f.yield_strength << " MPa)"
+          {
+            out << "; safety against yield ";
+            if (std::isinf(f.yield_safety))
+              out << "infinite";
+            else
+              out << f.yield_safety;
+          }
+        if (f.yield_strength > 0.)
+          out << " (R_e " << f.yield_strength << " MPa)"
+              << (std::isinf(f.yield_safety) ? " (no stress)" : "")
               << (f.yield_safety < 1. ? ": YIELDS, the elastic answer "
                                         "does not hold" :
                                         "");

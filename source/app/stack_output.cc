@@ -19,9 +19,12 @@ namespace coaxfit
       return std::isfinite(x) ? Json(x) : Json(nullptr);
     }
 
-    /** The pressure figures of a joint. */
+    /**
+     * The figures of a joint; its safety against slip with @p slip (a
+     * required torque given).
+     */
     Json
-    joint_json(const JointFigures &f)
+    joint_json(const JointFigures &f, const bool slip)
     {
       Json j;
       j["name"]                   = f.name;
@@ -47,7 +50,7 @@ namespace coaxfit
           j["design"]
             = {{"friction_coefficient", f.friction_coefficient},
                {"torque_capacity", number_or_null(f.torque_capacity)}};
-          if (f.slip_safety > 0.)
+          if (slip)
             j["design"]["slip_safety"] = f.slip_safety;
         }
       return j;
@@ -162,7 +165,7 @@ namespace coaxfit
     Json joints_json = Json::array();
     for (const JointFigures &f : joints_out)
       {
-        joints_json.push_back(joint_json(f));
+        joints_json.push_back(joint_json(f, parameters.required_torque > 0.));
         joints_json.back()["fit"] = parameters.fits[&f - &joints_out[0]].source;
       }
     j["joints"]      = joints_json;
@@ -175,7 +178,8 @@ namespace coaxfit
         if (f.yield_strength > 0.)
           {
             b["yield_strength"] = f.yield_strength;
-            b["yield_safety"]   = f.yield_safety;
+            // null for a body without stress (infinite safety).
+            b["yield_safety"] = number_or_null(f.yield_safety);
           }
         bodies_json.push_back(b);
       }

@@ -13,7 +13,8 @@ namespace coaxfit
   CompoundCylinders::CompoundCylinders(const std::vector<Ring>   &rings,
                                        const std::vector<double> &interferences,
                                        const double inner_pressure,
-                                       const double outer_pressure)
+                                       const double outer_pressure,
+                                       const bool   unilateral)
     : rings(rings)
   {
     const unsigned int n = rings.size();
@@ -53,7 +54,7 @@ namespace coaxfit
       {
         solve(interferences, closed, inner_pressure, outer_pressure);
         bool changed = false;
-        for (unsigned int k = 0; k + 1 < n; ++k)
+        for (unsigned int k = 0; k + 1 < n && unilateral; ++k)
           {
             const double R = 0.5 * rings[k].outer_diameter;
             if (closed[k] && -radial_stress(k, R) < 0.)

@@ -55,6 +55,12 @@ namespace coaxfit
             valid_chars
               = valid_chars
                 && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+          if (name.size() > 40)
+            throw InputError("parameter Assembly/Bodies: the name '"
+                             + name.substr(0, 40)
+                             + "...' is too long (allowed: at most 40 "
+                               "characters; the result files are named "
+                               "after the joints)");
           if (!valid_chars)
             throw InputError(
               "parameter Assembly/Bodies: '" + name
@@ -465,10 +471,19 @@ namespace coaxfit
     const std::vector<std::pair<std::string, std::string>> &overrides)
   {
     std::string list;
+    bool        overridden = false;
     for (const auto &[path, value] : overrides)
       if (path == "Assembly/Bodies")
-        list = value;
-    if (!list.empty())
+        {
+          list       = value;
+          overridden = true;
+        }
+    if (overridden && trim(list).empty())
+      throw InputError("--set Assembly/Bodies=" + list
+                       + ": empty; allowed 2 to 20 bodies, listed inside out "
+                         "(a file of one Shaft and one Hub gives no "
+                         "Assembly subsection)");
+    if (overridden)
       return split_bodies(list);
     // A file the full reading refuses (not a regular file, an include
     // cycle, too large) is left to it: it names what is wrong.
@@ -485,11 +500,13 @@ namespace coaxfit
       return {}; // the full reading names the file
     // Only a file that mentions the subsection is parsed twice.
     std::string line;
-    bool        mentioned = false;
-    while (!mentioned && std::getline(in, line))
-      mentioned = line.find("Assembly") != std::string::npos
-                  || line.find("include") != std::string::npos;
-    if (!mentioned)
+    bool        assembly = false, include = false;
+    while (!assembly && std::getline(in, line))
+      {
+        assembly = assembly || line.find("Assembly") != std::string::npos;
+        include  = include || line.find("include") != std::string::npos;
+      }
+    if (!assembly && !include)
       return {};
     ParameterHandler prm;
     declare_bodies_entry(prm, list);
@@ -497,9 +514,15 @@ namespace coaxfit
       {
         prm.parse_input(filename, "", true, false);
       }
-    catch (const std::exception &)
+    catch (const std::exception &error)
       {
-        return {}; // the full reading reports what is wrong
+        // A file that names an Assembly is a stack's: say what is wrong
+        // with it (a missing included file); else the full reading of a
+        // two-body file reports it.
+        if (assembly)
+          throw InputError("in parameter file '" + filename
+                           + "': " + one_line_message(error));
+        return {};
       }
     prm.enter_subsection("Assembly");
     list = prm.get("Bodies");

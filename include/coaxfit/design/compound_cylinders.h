@@ -51,12 +51,14 @@ namespace coaxfit
      * @p outer_pressure on the outer surface (MPa).
      * @throws std::invalid_argument for fewer than two rings, rings that
      * do not meet, a number of interferences that is not the number of
-     * joints, or material constants out of range.
+     * joints, or material constants out of range. Without @p unilateral
+     * every joint stays closed (bonded radially: a clearance pulls).
      */
     CompoundCylinders(const std::vector<Ring>   &rings,
                       const std::vector<double> &interferences,
                       double                     inner_pressure = 0.,
-                      double                     outer_pressure = 0.);
+                      double                     outer_pressure = 0.,
+                      bool                       unilateral     = true);
 
     /** The contact pressure of joint @p k (MPa; 0 if open). */
     double

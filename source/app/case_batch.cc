@@ -90,6 +90,14 @@ namespace coaxfit
            CoaxialFit        *prepared)
   {
     CaseFigures figures;
+    if ((parameters.shaft.plastic || parameters.hub.plastic)
+        && !directory.empty())
+      throw InputError(
+        "parameter Material/"
+        + std::string(parameters.hub.plastic ? "Hub" : "Shaft")
+        + "/Plasticity = von Mises: an elastic-plastic fit runs on its own "
+          "in this version (one parameter file, no --sweep, not one case of "
+          "several files); allowed in a study is Plasticity = none");
     if (parameters.design.mode == DesignMode::select)
       {
         // A case of a sweep: into the sweep's directory; a prepared case

@@ -1,5 +1,6 @@
 #include <coaxfit/app/case_batch.h>
 #include <coaxfit/app/parameter_sweep.h>
+#include <coaxfit/app/plastic_fit.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/app/usage.h>
@@ -416,6 +417,15 @@ namespace
 
         const Parameters parameters
           = read_parameters(line.filenames[0], line.overrides);
+        if (parameters.shaft.plastic || parameters.hub.plastic)
+          {
+            // A body that may yield: the load path of PlasticFit (which
+            // hands a fit that stays elastic to the elastic code).
+            PlasticFit fit(parameters, std::cout, !line.quiet);
+            const int  code = fit.run();
+            check_standard_output();
+            return code;
+          }
         const CaseFigures figures
           = run_case(parameters, std::cout, !line.quiet);
         check_standard_output();

@@ -165,6 +165,7 @@ namespace coaxfit
       material.kind = data->kind;
     else
       material.kind = MaterialKind::metal;
+    material.plastic = material.plasticity_text == "von Mises";
     if (data == nullptr)
       return;
     material.family = data->family;

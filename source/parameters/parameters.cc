@@ -405,6 +405,28 @@ namespace coaxfit
                           "material Name (EN-GJL-250 brittle, the others "
                           "metal), metal for custom.",
                       Patterns::Selection("auto|metal|brittle|polymer"));
+    prm.add_parameter("Plasticity",
+                      plasticity_text,
+                      "Material model of the " + body_label
+                        + ": none (linear elastic; above the yield "
+                          "strength the run warns and its pressure is one "
+                          "the part cannot carry) or von Mises (elastic-"
+                          "plastic, small strains: the von Mises yield "
+                          "surface of Yield strength with linear isotropic "
+                          "hardening of Hardening modulus; the interference "
+                          "is then applied in increments and the pressure "
+                          "that remains is the one the yielded part "
+                          "carries). Needs Yield strength > 0 (given or "
+                          "from Name). Two bodies only in this version.",
+                      Patterns::Selection("none|von Mises"));
+    prm.add_parameter("Hardening modulus",
+                      hardening_modulus,
+                      "Plasticity = von Mises: slope H of the yield "
+                      "stress over the equivalent plastic strain, in "
+                      "MPa (linear isotropic hardening: sigma_y = "
+                      "Yield strength + H eps_p); 0 is perfectly "
+                      "plastic. Allowed: 0 <= H < E.",
+                      Patterns::Double());
   }
 
 
@@ -414,6 +436,21 @@ namespace coaxfit
   {
     require(E >= 1e-6 && E <= 1e9, path + "/E", E, "1e-6 <= E <= 1e9");
     require(nu > -1. && nu < 0.5, path + "/nu", nu, "-1 < nu < 0.5");
+    require(hardening_modulus >= 0. && hardening_modulus < E,
+            path + "/Hardening modulus",
+            hardening_modulus,
+            "0 <= H < E (0: perfectly plastic)");
+    if (plastic && !(yield_strength > 0.))
+      throw InputError("parameter " + path
+                       + "/Yield strength = 0 (unknown) but Plasticity = "
+                         "von Mises: an elastic-plastic body needs its yield "
+                         "strength, allowed is Yield strength > 0 in MPa (or "
+                         "a Name that gives it)");
+    if (plastic && kind == MaterialKind::brittle)
+      throw InputError("parameter " + path
+                       + "/Plasticity = von Mises but the material is "
+                         "brittle (Kind): a brittle part does not yield, "
+                         "allowed is Plasticity = none for it");
     if (kind == MaterialKind::brittle && !(tensile_strength > 0.))
       throw InputError("parameter " + path
                        + "/Tensile strength = 0 (unknown) but the material "
@@ -513,6 +550,47 @@ namespace coaxfit
                   "volumetric_stress), which is accurate for FE_Q(2) "
                   "and up; FE_Q(1) gives one value per cell, off by up "
                   "to a third of p next to the axis at nu = 0.4999.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadPathParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load path");
+    prm.add_parameter("Increments",
+                      increments,
+                      "Bodies with Plasticity = von Mises only: the "
+                      "interference is applied elastically up to the first "
+                      "yield (one solve), then in this many equal "
+                      "increments up to its full value; an increment whose "
+                      "Newton solve or coupling fails is halved and "
+                      "retried, and the increments after it grow back to "
+                      "this size (doubling), so that the load path does "
+                      "not depend on the coupling method. Allowed: 1 to "
+                      "10000.",
+                      Patterns::Integer(1, 10000));
+    prm.add_parameter("Max bisections",
+                      max_bisections,
+                      "How often one increment may be halved before the "
+                      "run stops as not converged (exit 2, naming the body "
+                      "and the increment). Allowed: 0 to 30.",
+                      Patterns::Integer(0, 30));
+    prm.add_parameter("Newton tolerance",
+                      newton_tolerance,
+                      "Relative residual at which a body's Newton solve "
+                      "(radial return, consistent tangent) has converged: "
+                      "the norm of the out-of-balance nodal forces over "
+                      "the norm of the forces the body carries. Allowed: "
+                      "1e-14 to 1e-4.",
+                      Patterns::Double(1e-14, 1e-4));
+    prm.add_parameter("Max Newton iterations",
+                      max_newton_iterations,
+                      "Newton iterations of one body solve before the "
+                      "increment counts as failed and is halved. Allowed: "
+                      "2 to 200.",
+                      Patterns::Integer(2, 200));
     prm.leave_subsection();
   }
 
@@ -928,6 +1006,7 @@ namespace coaxfit
     operation.declare_parameters(prm);
     mesh.declare_parameters(prm);
     solver.declare_parameters(prm);
+    load_path.declare_parameters(prm);
     coupling.declare_parameters(prm);
     contact.declare_parameters(prm);
     output.declare_parameters(prm);

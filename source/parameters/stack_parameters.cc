@@ -423,6 +423,13 @@ namespace coaxfit
                 + joint_name(b - 1) + "/Diametral interference");
           }
         materials[b].validate("Material/" + bodies[b]);
+        if (materials[b].plastic)
+          throw InputError("parameter Material/" + bodies[b]
+                           + "/Plasticity = von Mises: elastic-plastic "
+                             "bodies are computed for two bodies (a shaft "
+                             "and a hub) in this version, not in a stack of "
+                             "several (Assembly/Bodies); allowed here is "
+                             "Plasticity = none");
       }
     for (unsigned int k = 0; k < n_joints(); ++k)
       {

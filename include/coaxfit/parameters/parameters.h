@@ -46,6 +46,16 @@ namespace coaxfit
     MaterialFamily family = MaterialFamily::unknown;
     /** Whether E was given in the file (not filled in from the Name). */
     bool E_given = true;
+    /** The entry Plasticity as given: none or von Mises. */
+    std::string plasticity_text = "none";
+    /**
+     * Whether the body may yield (Plasticity = von Mises): then its
+     * stresses are bounded by the von Mises yield surface of
+     * Yield strength, hardening linearly with Hardening modulus.
+     */
+    bool plastic = false;
+    /** Linear isotropic hardening modulus H (MPa); 0: perfectly plastic. */
+    double hardening_modulus = 0.;
 
     /**
      * Declare `Name`, `E`, `nu`, `Yield strength`, `Tensile strength`,
@@ -229,6 +239,26 @@ namespace coaxfit
     automatic, ///< direct while its estimated memory fits, amg beyond
     direct,    ///< CHOLMOD supernodal Cholesky
     amg        ///< CG with Trilinos' algebraic multigrid (ML)
+  };
+
+  /**
+   * `Load path`: how the interference is applied to bodies that may yield
+   * (Material/<body>/Plasticity = von Mises): in increments, each solved
+   * by Newton's method per body within the coupling.
+   */
+  struct LoadPathParameters
+  {
+    /** Equal increments from the first yield to the full interference. */
+    unsigned int increments = 8;
+    /** Halvings of a failed increment before the run gives up. */
+    unsigned int max_bisections = 10;
+    /** Relative residual of a body's Newton solve. */
+    double newton_tolerance = 1e-10;
+    /** Newton iterations of one body solve before the increment is cut. */
+    unsigned int max_newton_iterations = 25;
+
+    void
+    declare_parameters(ParameterHandler &prm);
   };
 
   struct SolverParameters
@@ -417,6 +447,7 @@ namespace coaxfit
     OperationParameters operation; ///< `Operation`: loads in service
     MeshParameters      mesh;
     SolverParameters    solver;
+    LoadPathParameters  load_path; ///< `Load path`: plastic bodies
     CouplingParameters  coupling;
     ContactParameters   contact;
     OutputParameters    output;

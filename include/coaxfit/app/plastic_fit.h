@@ -1,0 +1,141 @@
+#ifndef coaxfit_plastic_fit_h
+#define coaxfit_plastic_fit_h
+
+#include <coaxfit/coupling/plastic_coupling.h>
+#include <coaxfit/coupling/scene.h>
+#include <coaxfit/design/radial_plastic_fit.h>
+#include <coaxfit/parameters/parameters.h>
+#include <coaxfit/solvers/plastic_body.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  /**
+   * The run of a fit whose shaft or hub may yield (Material/<body>/
+   * Plasticity = von Mises), in deal.II's tutorial structure:
+   * setup_system() builds the two plain cylinders and their PlasticBody
+   * solvers; solve() finds the elastic limit (one linear solve: the
+   * fraction of the interference at which the first point reaches its
+   * yield strength) and, if the full interference passes it, applies the
+   * rest in increments (Load path), each a coupled solve of the contact
+   * (PlasticCoupling, staggered or monolithic by Solver/Method) from the
+   * committed plastic states, halved when a Newton solve or the coupling
+   * fails and doubled after an easy one; postprocess() and
+   * output_results() write the state after joining.
+   *
+   * A fit that stays elastic is handed to the elastic code unchanged
+   * (CoaxialFit, with all its results): run() says so and returns its exit
+   * code. This version computes the joining stage of two plain cylinders
+   * without loads of operation.
+   */
+  class PlasticFit
+  {
+  public:
+    PlasticFit(const Parameters &parameters, std::ostream &out, bool verbose);
+
+    /**
+     * Run the case; the exit code (0 converged, 2 a load increment that
+     * could not be solved: the last converged state is written, marked not
+     * converged). Throws InputError for what this version does not
+     * compute (checked before any work).
+     */
+    int
+    run();
+
+    /** Meshes, DoFs, the plastic bodies and the coupling. */
+    void
+    setup_system();
+
+    /**
+     * The elastic solve at the full interference: the fraction of it at
+     * which the first point yields (> 1: the fit stays elastic).
+     */
+    double
+    elastic_limit_fraction();
+
+    /** The load path from the elastic limit on; whether it was completed. */
+    bool
+    solve();
+
+    /** Pressures, plastic zones and estimates of the committed state. */
+    void
+    postprocess();
+
+    /** Print the report and write the result files into @p directory. */
+    void
+    output_results(const std::string &directory) const;
+
+    /** One increment of the load path, as it was solved. */
+    struct Increment
+    {
+      double       fraction;       ///< of the full interference
+      unsigned int steps;          ///< coupling (or Newton) steps
+      unsigned int max_iterations; ///< of one body's Newton solve
+      unsigned int halvings;       ///< before it converged
+      double       mean_pressure;  ///< MPa
+    };
+
+    /** The plastic figures of one body. */
+    struct BodyFigures
+    {
+      std::string name;
+      bool        plastic_model = false; ///< Plasticity = von Mises
+      bool        yields        = false;
+      bool        fully_plastic = false;     ///< the whole wall at one section
+      double      plastic_diameter_mid = 0.; ///< mm, at the mid-plane
+      double      utilisation          = 0.; ///< of the wall at mid-plane
+      double      r_min = 0., r_max = 0., z_max = 0.; ///< plastic zone, mm
+      double      max_equivalent_plastic_strain = 0.;
+      double      max_von_mises                 = 0.; ///< MPa
+    };
+
+  private:
+    /** Refuse what this version does not compute (before any work). */
+    void
+    check_scope() const;
+
+    /** The pointwise radial interference for @p fraction of the full. */
+    Vector<double>
+    interference(double fraction) const;
+
+    /** The mean pressure of the current contact force (MPa). */
+    double
+    mean_pressure() const;
+
+    /** The figures of body @p b from its committed state. */
+    BodyFigures
+    body_figures(unsigned int b) const;
+
+    Parameters                                parameters;
+    std::ostream                             &out;
+    const bool                                verbose;
+    Scene                                     scene;
+    std::vector<std::unique_ptr<PlasticBody>> bodies; ///< shaft, hub
+    std::unique_ptr<PlasticCoupling>          coupling;
+
+    double                 elastic_fraction = 0.;
+    double                 reached          = 0.;
+    bool                   completed        = false;
+    std::string            failure;
+    std::vector<Increment> increments;
+    unsigned int           total_steps = 0, body_solves = 0;
+
+    // After postprocess():
+    Vector<double>           pressure; ///< F_i / w_i
+    double                   p_mid = 0., p_mean = 0., p_min = 0., p_max = 0.;
+    double                   z_of_max         = 0.;
+    unsigned int             separated_points = 0;
+    std::vector<BodyFigures> figures;
+    double                   din_estimate = 0., din_limit = 0.;
+    RadialPlasticFit::Result radial;
+    double                   elastic_lame    = 0.;
+    double                   torque_capacity = 0., slip_safety = 0.;
+    double                   time_setup = 0., time_solve = 0.;
+  };
+} // namespace coaxfit
+
+#endif

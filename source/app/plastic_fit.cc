@@ -1,0 +1,358 @@
+#include <coaxfit/app/plastic_fit.h>
+#include <coaxfit/base/input_error.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <map>
+
+namespace coaxfit
+{
+  PlasticFit::PlasticFit(const Parameters &parameters,
+                         std::ostream     &out,
+                         const bool        verbose)
+    : parameters(parameters)
+    , out(out)
+    , verbose(verbose)
+    , scene(parameters)
+  {}
+
+
+
+  void
+  PlasticFit::check_scope() const
+  {
+    const std::string why
+      = "Material/Shaft or Material/Hub has Plasticity = von Mises: "
+        "elastic-plastic fits are computed for two plain cylinders in the "
+        "state of joining in this version; ";
+    if (parameters.sections)
+      throw InputError("parameter Geometry/Shaft section or Hub section: " + why
+                       + "give the plain cylinders (empty sections)");
+    for (const Body &body : scene.bodies)
+      if (body.discretization->load().any())
+        throw InputError("parameters Operation/...: " + why
+                         + "the loads of operation must be zero (they are "
+                           "the next stage of the load path)");
+    if (parameters.design.mode == DesignMode::select)
+      throw InputError("parameter Design/Mode = select: " + why
+                       + "the fit selection stays elastic, allowed is "
+                         "Design/Mode = check");
+    if (parameters.fit.fit_case == FitCase::all)
+      throw InputError("parameter Fit/Case = all: " + why
+                       + "allowed are min, mean and max");
+    if (parameters.mesh.degree < 1)
+      throw InputError("parameter Mesh/Degree: at least 1");
+  }
+
+
+
+  void
+  PlasticFit::setup_system()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    for (Body &body : scene.bodies)
+      body.discretization->setup_system();
+    for (Body &body : scene.bodies)
+      body.discretization->assemble_system();
+    scene.connect_joint();
+    if (scene.has_transfer())
+      throw InputError("parameter Mesh/Joint nodes = own: elastic-plastic "
+                       "fits need matching joint nodes, allowed is "
+                       "Mesh/Joint nodes = shared");
+    for (const Body &body : scene.bodies)
+      {
+        bodies.push_back(std::make_unique<PlasticBody>(*body.discretization,
+                                                       parameters.load_path));
+        bodies.back()->setup_system();
+      }
+    PlasticCoupling::Settings settings;
+    settings.monolithic  = parameters.solver.method == SolverMethod::monolithic;
+    settings.unilateral  = parameters.contact.unilateral;
+    settings.tolerance   = parameters.coupling.tolerance;
+    settings.max_steps   = parameters.coupling.max_steps;
+    settings.iqn_columns = parameters.coupling.iqn_columns;
+    settings.iqn_filter  = parameters.coupling.iqn_filter;
+    coupling
+      = std::make_unique<PlasticCoupling>(*bodies[0], *bodies[1], settings);
+    time_setup
+      = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+  }
+
+
+
+  Vector<double>
+  PlasticFit::interference(const double fraction) const
+  {
+    const unsigned int n = scene.bodies[1].discretization->n_interface_points();
+    Vector<double>     d(n);
+    d = fraction * scene.joint().radial_interference;
+    return d;
+  }
+
+
+
+  double
+  PlasticFit::mean_pressure() const
+  {
+    // The normal force over the joint's area: sum F_i = int p r dz.
+    const BodyDiscretization &hub    = *scene.bodies[1].discretization;
+    const auto               &z      = hub.interface_z();
+    const double              length = z.back() - z.front();
+    const double              radius = hub.interface_points()[0][0];
+    double                    sum    = 0.;
+    for (unsigned int i = 0; i < coupling->force().size(); ++i)
+      sum += coupling->force()[i];
+    return sum / (radius * length);
+  }
+
+
+
+  double
+  PlasticFit::elastic_limit_fraction()
+  {
+    for (auto &body : bodies)
+      body->set_elastic_only(true);
+    const IncrementOutcome outcome = coupling->solve(interference(1.), nullptr);
+    for (auto &body : bodies)
+      body->set_elastic_only(false);
+    total_steps += outcome.steps;
+    body_solves += outcome.body_solves;
+    if (!outcome.converged)
+      throw SolverError("the elastic solve of the fit did not converge: "
+                        + outcome.failure);
+    for (auto &body : bodies)
+      body->commit();
+    coupling->commit();
+    double ratio = 0.;
+    for (const auto &body : bodies)
+      ratio = std::max(ratio, body->max_yield_ratio());
+    elastic_fraction = ratio > 0. ? 1. / ratio : 1e300;
+    if (elastic_fraction < 1.)
+      {
+        // Linear up to the first yield: the state there is the elastic one
+        // scaled (with unilateral contact too, as long as its contact
+        // points stay: scaling keeps the signs of forces and gaps).
+        for (auto &body : bodies)
+          body->scale_committed(elastic_fraction);
+        coupling->scale_committed(elastic_fraction);
+        reached = elastic_fraction;
+      }
+    else
+      reached = 1.;
+    return elastic_fraction;
+  }
+
+
+
+  bool
+  PlasticFit::solve()
+  {
+    const auto   start     = std::chrono::steady_clock::now();
+    const double U         = 2. * scene.joint().radial_interference;
+    const double nominal   = (1. - reached) / parameters.load_path.increments;
+    double       step      = nominal;
+    double       last_step = reached;
+    unsigned int halvings  = 0;
+    completed              = reached >= 1.;
+    while (!completed)
+      {
+        const double next = std::min(1., reached + step);
+        const double size = next - reached;
+        for (auto &body : bodies)
+          body->extrapolate(size / last_step);
+        coupling->extrapolate(size / last_step);
+        const IncrementOutcome outcome
+          = coupling->solve(interference(next), nullptr);
+        total_steps += outcome.steps;
+        body_solves += outcome.body_solves;
+        if (!outcome.converged)
+          {
+            for (auto &body : bodies)
+              body->revert();
+            coupling->revert();
+            if (++halvings > parameters.load_path.max_bisections)
+              {
+                std::ostringstream text;
+                text << std::setprecision(6) << "the load increment from "
+                     << reached * U << " to " << next * U
+                     << " mm of the interference U (increment "
+                     << increments.size() + 1 << ", halved "
+                     << parameters.load_path.max_bisections
+                     << " times, Load path/Max bisections) failed: "
+                     << outcome.failure;
+                failure = text.str();
+                break;
+              }
+            step = size / 2.;
+            continue;
+          }
+        for (auto &body : bodies)
+          body->commit();
+        coupling->commit();
+        reached   = next;
+        last_step = size;
+        increments.push_back({next,
+                              outcome.steps,
+                              outcome.max_body_iterations,
+                              halvings,
+                              mean_pressure()});
+        if (verbose)
+          out << "  increment " << std::setw(3) << increments.size() << ": U "
+              << std::fixed << std::setprecision(5) << next * U << " mm ("
+              << std::setprecision(1) << 100. * next << " %), " << outcome.steps
+              << " steps, Newton <= " << outcome.max_body_iterations
+              << ", mean p " << std::setprecision(2)
+              << increments.back().mean_pressure << " MPa" << std::defaultfloat
+              << '\n';
+        // After a halved increment the next ones grow back to the nominal
+        // size, never beyond: the load path is the same whichever method
+        // solves it (the staggered and monolithic answers then agree to
+        // the coupling tolerance, not to the path's own error).
+        step      = std::min(nominal, 2. * size);
+        halvings  = 0;
+        completed = reached >= 1.;
+      }
+    time_solve
+      = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    return completed;
+  }
+
+
+
+  PlasticFit::BodyFigures
+  PlasticFit::body_figures(const unsigned int b) const
+  {
+    const PlasticBody                       &body   = *bodies[b];
+    const BodyDiscretization                &disc   = body.discretization();
+    const auto                              &state  = body.committed_states();
+    const auto                              &point  = body.quadrature_points();
+    const std::vector<Axisymmetric::Vector4> stress = body.committed_stresses();
+    BodyFigures                              f;
+    f.name          = disc.name();
+    f.plastic_model = disc.material().plastic;
+    f.r_min         = 1e300;
+    // Layers of quadrature points at the same z (the meshes of plain
+    // cylinders are structured): a layer that yields all through is a
+    // section plastic through its whole wall.
+    std::map<double, std::vector<std::pair<double, bool>>> layers;
+    for (unsigned int i = 0; i < state.size(); ++i)
+      {
+        const bool plastic = state[i].equivalent_plastic_strain > 0.;
+        f.max_von_mises
+          = std::max(f.max_von_mises, Axisymmetric::von_mises(stress[i]));
+        f.max_equivalent_plastic_strain
+          = std::max(f.max_equivalent_plastic_strain,
+                     state[i].equivalent_plastic_strain);
+        if (plastic)
+          {
+            f.yields = true;
+            f.r_min  = std::min(f.r_min, point[i][0]);
+            f.r_max  = std::max(f.r_max, point[i][0]);
+            f.z_max  = std::max(f.z_max, point[i][1]);
+          }
+        layers[std::round(point[i][1] * 1e9) / 1e9].push_back(
+          {point[i][0], plastic});
+      }
+    if (!f.yields)
+      f.r_min = f.r_max = 0.;
+    for (auto &[z, layer] : layers)
+      {
+        bool all = true;
+        for (const auto &p : layer)
+          all = all && p.second;
+        f.fully_plastic = f.fully_plastic || all;
+      }
+    // The plastic zone at the mid-plane (the layer of smallest z), from the
+    // joint into the wall: its border halfway between the last plastic
+    // point and the next.
+    auto &mid = layers.begin()->second;
+    std::sort(mid.begin(), mid.end());
+    const bool   outer = b == 1; // the hub yields from its bore outwards
+    const double joint = outer ?
+                           scene.bodies[1].discretization->geometry().r_inner :
+                           scene.bodies[0].discretization->geometry().r_outer;
+    const double far   = outer ?
+                           scene.bodies[1].discretization->geometry().r_outer :
+                           scene.bodies[0].discretization->geometry().r_inner;
+    if (!outer)
+      std::reverse(mid.begin(), mid.end());
+    std::size_t k = 0;
+    while (k < mid.size() && mid[k].second)
+      ++k;
+    const double border    = k == 0 ? joint :
+                             k == mid.size() ?
+                                      far :
+                                      0.5 * (mid[k - 1].first + mid[k].first);
+    f.plastic_diameter_mid = 2. * border;
+    f.utilisation          = (border - joint) / (far - joint);
+    return f;
+  }
+
+
+
+  void
+  PlasticFit::postprocess()
+  {
+    const BodyDiscretization &hub = *scene.bodies[1].discretization;
+    const Vector<double>     &F   = coupling->force();
+    const auto               &z   = hub.interface_z();
+    pressure.reinit(F.size());
+    for (unsigned int i = 0; i < F.size(); ++i)
+      pressure[i] = F[i] / hub.interface_weights()[i];
+    p_mid    = pressure[0];
+    p_mean   = mean_pressure();
+    p_min    = *std::min_element(pressure.begin(), pressure.end());
+    p_max    = pressure[0];
+    z_of_max = z[0];
+    for (unsigned int i = 0; i < F.size(); ++i)
+      if (pressure[i] > p_max)
+        p_max = pressure[i], z_of_max = z[i];
+    separated_points = 0;
+    for (const bool a : coupling->active())
+      separated_points += a ? 0 : 1;
+    figures.clear();
+    for (unsigned int b = 0; b < 2; ++b)
+      figures.push_back(body_figures(b));
+
+    const GeometryParameters &g  = parameters.geometry;
+    const double              DF = 2. * g.R1, DaA = 2. * g.R2;
+    if (parameters.hub.plastic)
+      {
+        din_estimate = elastic_plastic_hub_pressure(
+          parameters.hub.yield_strength,
+          DF,
+          DaA,
+          std::max(DF, std::min(DaA, figures[1].plastic_diameter_mid)));
+        din_limit = elastic_plastic_hub_pressure(parameters.hub.yield_strength,
+                                                 DF,
+                                                 DaA,
+                                                 DaA);
+      }
+    // The plane-stress radial model of the same rings (the thin-disc
+    // state DIN 7190's elastic formulas assume too).
+    RadialPlasticFit model({g.R0, g.R1, parameters.shaft},
+                           {g.R1, g.R2, parameters.hub},
+                           RadialPlasticFit::State::plane_stress,
+                           400);
+    radial = model.solve(g.d, 100);
+    // The elastic plane-stress pressure (Lame) for comparison.
+    const Material &s = parameters.shaft, &h = parameters.hub;
+    const double    q_hub
+      = (g.R2 * g.R2 + g.R1 * g.R1) / (g.R2 * g.R2 - g.R1 * g.R1);
+    const double q_shaft
+      = (g.R1 * g.R1 + g.R0 * g.R0) / (g.R1 * g.R1 - g.R0 * g.R0);
+    elastic_lame
+      = g.d / (g.R1 * ((q_hub + h.nu) / h.E + (q_shaft - s.nu) / s.E));
+    // Torque capacity: friction on the normal force pi D_F l_F p_mean.
+    const double length = 2. * (z.back() - z.front());
+    torque_capacity     = parameters.design.friction_coefficient * p_mean * M_PI
+                      * DF * length * DF / 2. / 1000.;
+    slip_safety = parameters.design.required_torque > 0. ?
+                    torque_capacity / parameters.design.required_torque :
+                    0.;
+  }
+} // namespace coaxfit

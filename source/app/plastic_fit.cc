@@ -1,4 +1,5 @@
 #include <coaxfit/app/plastic_fit.h>
+#include <coaxfit/base/blas_threads.h>
 #include <coaxfit/base/input_error.h>
 
 #include <algorithm>
@@ -52,6 +53,9 @@ namespace coaxfit
   PlasticFit::setup_system()
   {
     const auto start = std::chrono::steady_clock::now();
+    // The bodies' systems are small and solved one after the other: BLAS
+    // threads inside UMFPACK only wait for each other.
+    set_blas_threads(1);
     for (Body &body : scene.bodies)
       body.discretization->setup_system();
     for (Body &body : scene.bodies)
@@ -238,7 +242,19 @@ namespace coaxfit
     // Layers of quadrature points at the same z (the meshes of plain
     // cylinders are structured): a layer that yields all through is a
     // section plastic through its whole wall.
-    std::map<double, std::vector<std::pair<double, bool>>> layers;
+    struct LayerPoint
+    {
+      double r;
+      bool   plastic;
+      double yield_ratio; ///< von Mises over the yield stress
+      bool
+      operator<(const LayerPoint &other) const
+      {
+        return r < other.r;
+      }
+    };
+    const PlasticMaterial                     material(disc.material());
+    std::map<double, std::vector<LayerPoint>> layers;
     for (unsigned int i = 0; i < state.size(); ++i)
       {
         const bool plastic = state[i].equivalent_plastic_strain > 0.;
@@ -255,7 +271,12 @@ namespace coaxfit
             f.z_max  = std::max(f.z_max, point[i][1]);
           }
         layers[std::round(point[i][1] * 1e9) / 1e9].push_back(
-          {point[i][0], plastic});
+          {point[i][0],
+           plastic,
+           f.plastic_model ?
+             Axisymmetric::von_mises(stress[i])
+               / material.yield_stress(state[i].equivalent_plastic_strain) :
+             0.});
       }
     if (!f.yields)
       f.r_min = f.r_max = 0.;
@@ -263,12 +284,13 @@ namespace coaxfit
       {
         bool all = true;
         for (const auto &p : layer)
-          all = all && p.second;
+          all = all && p.plastic;
         f.fully_plastic = f.fully_plastic || all;
       }
     // The plastic zone at the mid-plane (the layer of smallest z), from the
-    // joint into the wall: its border halfway between the last plastic
-    // point and the next.
+    // joint into the wall: its border where the yield ratio of the elastic
+    // points, extrapolated linearly from the first two of them, reaches 1
+    // (kept between the last plastic point and the first elastic one).
     auto &mid = layers.begin()->second;
     std::sort(mid.begin(), mid.end());
     const bool   outer = b == 1; // the hub yields from its bore outwards
@@ -281,12 +303,22 @@ namespace coaxfit
     if (!outer)
       std::reverse(mid.begin(), mid.end());
     std::size_t k = 0;
-    while (k < mid.size() && mid[k].second)
+    while (k < mid.size() && mid[k].plastic)
       ++k;
-    const double border    = k == 0 ? joint :
-                             k == mid.size() ?
-                                      far :
-                                      0.5 * (mid[k - 1].first + mid[k].first);
+    double border = k == 0 ? joint : far;
+    if (k > 0 && k < mid.size())
+      {
+        const LayerPoint &a = mid[k], &c = mid[k - 1];
+        border = 0.5 * (a.r + c.r);
+        if (k + 1 < mid.size() && mid[k + 1].yield_ratio < a.yield_ratio)
+          {
+            const LayerPoint &n = mid[k + 1];
+            const double      r = a.r
+                             - (1. - a.yield_ratio) * (n.r - a.r)
+                                 / (a.yield_ratio - n.yield_ratio);
+            border = std::clamp(r, std::min(a.r, c.r), std::max(a.r, c.r));
+          }
+      }
     f.plastic_diameter_mid = 2. * border;
     f.utilisation          = (border - joint) / (far - joint);
     return f;

@@ -1,5 +1,5 @@
 // An elastic-plastic fit against the radial one-dimensional solution
-// (RadialPlasticFit: von Mises, linear elements in r, 1000 per body, 200
+// (RadialPlasticFit: von Mises, linear elements in r, 500 per body, 100
 // increments): a long fit (shaft and hub 800 mm, eight outer diameters) at
 // its mid-length against generalized plane strain with zero axial force
 // (joint pressure and plastic zone diameter within 0.5 %), the same fit
@@ -42,7 +42,7 @@ namespace
     return coaxfit::RadialPlasticFit({0., 25., steel},
                                      {25., 50., hub},
                                      state,
-                                     1000);
+                                     500);
   }
 
   /** Run the example with @p arguments in @p dir; its summary. */
@@ -91,7 +91,7 @@ main()
 {
   const std::string mesh
     = "--set 'Mesh/Radial cells=20' --set 'Mesh/Grading ratio=1' "
-      "--set 'Mesh/Axial cells=12' --set 'Load path/Increments=16' ";
+      "--set 'Mesh/Axial cells=8' --set 'Load path/Increments=8' ";
   const std::string long_fit
     = mesh
       + "--set 'Geometry/Hub length=800' --set 'Geometry/Shaft length=800' ";
@@ -100,7 +100,7 @@ main()
   compare(run_example("long", long_fit),
           radial_model(
             coaxfit::RadialPlasticFit::State::generalized_plane_strain)
-            .solve(0.08, 200),
+            .solve(0.08, 100),
           0.005,
           true);
 
@@ -108,7 +108,7 @@ main()
   compare(
     run_example("limit", long_fit + "--set 'Fit/Diametral interference=0.6'"),
     radial_model(coaxfit::RadialPlasticFit::State::generalized_plane_strain)
-      .solve(0.3, 200),
+      .solve(0.3, 100),
     0.01,
     false);
 
@@ -118,7 +118,7 @@ main()
                         + "--set 'Geometry/Hub length=5' "
                           "--set 'Geometry/Shaft length=5'"),
           radial_model(coaxfit::RadialPlasticFit::State::plane_stress)
-            .solve(0.08, 200),
+            .solve(0.08, 100),
           0.005,
           true,
           "mean");

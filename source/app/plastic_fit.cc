@@ -163,7 +163,10 @@ namespace coaxfit
     completed              = reached >= 1.;
     while (!completed)
       {
-        const double next = std::min(1., reached + step);
+        // The last increment ends at the full interference exactly (sums
+        // of fractions fall short of 1 by round-off).
+        const double next
+          = reached + step > 1. - 1e-9 * nominal ? 1. : reached + step;
         const double size = next - reached;
         for (auto &body : bodies)
           body->extrapolate(size / last_step);

@@ -167,6 +167,27 @@ main()
             << '\n';
   (void)failed;
 
+  std::cout << "a clearance (U -0.1 mm): stays elastic, no pressure:\n";
+  run_example("clearance", "--set 'Fit/Diametral interference=-0.1'");
+  std::cout << "  mean pressure "
+            << read_summary("clearance")["pressure"]["mean"] << '\n';
+
+  std::cout << "a yielding shaft (R_e 200 MPa) in an elastic hub: the hub "
+               "takes the Neumann step; staggered against monolithic:\n";
+  const std::string shaft = "--set 'Material/Shaft/Plasticity=von Mises' "
+                            "--set 'Material/Shaft/Yield strength=200' "
+                            "--set 'Material/Hub/Plasticity=none' ";
+  run_example("shaft_s", shaft);
+  run_example("shaft_m", shaft + "--set Solver/Method=monolithic");
+  const nlohmann::json ss = read_summary("shaft_s"),
+                       sm = read_summary("shaft_m");
+  std::cout << "  mean pressure (a solid shaft yields at p = R_e in plane "
+               "stress): "
+            << agreement(ss["pressure"]["mean"], 200., 1e-6) << ", monolithic "
+            << agreement(sm["pressure"]["mean"], ss["pressure"]["mean"], 1e-6)
+            << ", shaft fully plastic "
+            << ss["plasticity"]["bodies"][0]["fully_plastic"] << '\n';
+
   std::cout << "bad input:\n";
   run_example("bad", "--set 'Material/Hub/Hardening modulus=-5'");
   run_example("bad", "--set 'Material/Hub/Yield strength=0'");
@@ -177,6 +198,18 @@ main()
               "--set 'Material/Hub/Density=7850' --set 'Operation/Speed=3000'");
   run_example("bad",
               "--set 'Design/Mode=select' --set 'Design/Required torque=100'");
+  {
+    // The message names the file by its path: not printed.
+    const RunResult r
+      = run_coaxfit("bad",
+                    "--sweep 'Fit/Diametral interference=0.1,0.2' " + example);
+    std::cout << "  --sweep: exit code " << r.exit_code << ", " << r.lines
+              << " line(s), "
+              << (r.message.find("runs on its own") != std::string::npos ?
+                    "says it runs on its own" :
+                    "DOES NOT SAY WHY")
+              << '\n';
+  }
   std::cout << "  directory left: " << std::filesystem::exists("bad") << '\n';
   return 0;
 }

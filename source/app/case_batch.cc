@@ -90,8 +90,7 @@ namespace coaxfit
            CoaxialFit        *prepared)
   {
     CaseFigures figures;
-    if ((parameters.shaft.plastic || parameters.hub.plastic)
-        && !directory.empty())
+    if (parameters.shaft.plastic || parameters.hub.plastic)
       throw InputError(
         "parameter Material/"
         + std::string(parameters.hub.plastic ? "Hub" : "Shaft")

@@ -290,6 +290,8 @@ namespace coaxfit
     // And a Design/Mode = select run.
     for (const std::string &name : selection_files::file_names())
       names.insert(name);
+    // And an elastic-plastic run (PlasticFit) of the same case.
+    names.insert("load_path.csv");
     return names;
   }
 } // namespace coaxfit

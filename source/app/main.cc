@@ -395,6 +395,30 @@ namespace
                         << std::endl;
             return code;
           }
+        // An elastic-plastic fit runs on its own (checked up front, so
+        // that a study is refused in one line).
+        if (line.sweep || line.filenames.size() > 1)
+          for (const std::string &file : line.filenames)
+            {
+              // A file that cannot be read is the study's to report, case
+              // by case, as it does.
+              bool plastic = false, hub = false;
+              try
+                {
+                  const Parameters p = read_parameters(file, line.overrides);
+                  plastic            = p.shaft.plastic || p.hub.plastic;
+                  hub                = p.hub.plastic;
+                }
+              catch (const std::exception &)
+                {}
+              if (plastic)
+                throw InputError(
+                  "parameter Material/" + std::string(hub ? "Hub" : "Shaft")
+                  + "/Plasticity = von Mises in '" + file
+                  + "': an elastic-plastic fit runs on its own in this "
+                    "version (one parameter file, no --sweep); allowed in "
+                    "a study is Plasticity = none");
+            }
         if (line.sweep)
           {
             const int code = ParameterSweep(line.filenames[0],

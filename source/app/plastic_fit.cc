@@ -31,11 +31,31 @@ namespace coaxfit
     if (parameters.sections)
       throw InputError("parameter Geometry/Shaft section or Hub section: " + why
                        + "give the plain cylinders (empty sections)");
-    for (const Body &body : scene.bodies)
-      if (body.discretization->load().any())
-        throw InputError("parameters Operation/...: " + why
-                         + "the loads of operation must be zero (they are "
-                           "the next stage of the load path)");
+    // The loads of operation are the next stage of the load path.
+    const OperationParameters &o = parameters.operation;
+    std::string                load;
+    if (o.speed != 0.)
+      load = "Operation/Speed";
+    else if (o.shaft_bore_pressure != 0.)
+      load = "Operation/Shaft bore pressure";
+    else if (o.hub_outer_pressure != 0.)
+      load = "Operation/Hub outer pressure";
+    else if (o.shaft_temperature() != o.assembly_temperature)
+      load = "Operation/Shaft temperature";
+    else if (o.hub_temperature() != o.assembly_temperature)
+      load = "Operation/Hub temperature";
+    else
+      for (const Body &body : scene.bodies)
+        if (body.discretization->load().any())
+          load = "Operation/Face pressures";
+    if (!load.empty())
+      throw InputError("parameter " + load + ": " + why
+                       + "the loads of operation must be zero (they are "
+                         "the next stage of the load path, not yet here)");
+    if (parameters.mesh.reduced_volumetric_integration())
+      throw InputError("parameter Mesh/Volumetric integration = reduced: " + why
+                       + "elastic-plastic bodies are integrated with the "
+                         "full Gauss rule, allowed is full");
     if (parameters.design.mode == DesignMode::select)
       throw InputError("parameter Design/Mode = select: " + why
                        + "the fit selection stays elastic, allowed is "
@@ -72,7 +92,19 @@ namespace coaxfit
         bodies.back()->setup_system();
       }
     PlasticCoupling::Settings settings;
-    settings.monolithic  = parameters.solver.method == SolverMethod::monolithic;
+    settings.monolithic = parameters.solver.method == SolverMethod::monolithic;
+    // The staggered process gives the force to a body that stays elastic:
+    // a force beyond a yielding body's limit load has no answer.
+    settings.neumann_on_hub
+      = parameters.shaft.plastic && !parameters.hub.plastic;
+    if (!settings.monolithic && parameters.shaft.plastic
+        && parameters.hub.plastic)
+      {
+        settings.monolithic = true;
+        method_note = "both bodies may yield: the staggered process needs "
+                      "one that stays elastic for its Neumann step, so the "
+                      "monolithic solver is used";
+      }
     settings.unilateral  = parameters.contact.unilateral;
     settings.tolerance   = parameters.coupling.tolerance;
     settings.max_steps   = parameters.coupling.max_steps;
@@ -309,6 +341,15 @@ namespace coaxfit
     while (k < mid.size() && mid[k].plastic)
       ++k;
     double border = k == 0 ? joint : far;
+    // A zone that does not touch the joint (a shaft yielding about its
+    // axis): its border towards the joint.
+    if (k == 0)
+      for (std::size_t i = mid.size(); i-- > 0;)
+        if (mid[i].plastic)
+          {
+            border = mid[i].r;
+            break;
+          }
     if (k > 0 && k < mid.size())
       {
         const LayerPoint &a = mid[k], &c = mid[k - 1];
@@ -323,7 +364,12 @@ namespace coaxfit
           }
       }
     f.plastic_diameter_mid = 2. * border;
-    f.utilisation          = (border - joint) / (far - joint);
+    // The share of the wall's points at the mid-plane that yield.
+    std::size_t plastic_points = 0;
+    for (const LayerPoint &p : mid)
+      plastic_points += p.plastic ? 1 : 0;
+    f.utilisation = k > 0 ? (border - joint) / (far - joint) :
+                            static_cast<double>(plastic_points) / mid.size();
     return f;
   }
 
@@ -373,7 +419,17 @@ namespace coaxfit
                            {g.R1, g.R2, parameters.hub},
                            RadialPlasticFit::State::plane_stress,
                            400);
-    radial = model.solve(g.d, 100);
+    try
+      {
+        radial       = model.solve(g.d, 100);
+        radial_valid = true;
+      }
+    catch (const SolverError &)
+      {
+        // A side estimate: its failure (a wall of a few hundredths of a
+        // millimetre) is reported as missing, never as the run's.
+        radial_valid = false;
+      }
     // The elastic plane-stress pressure (Lame) for comparison.
     const Material &s = parameters.shaft, &h = parameters.hub;
     const double    q_hub

@@ -58,23 +58,32 @@ namespace coaxfit
     if (fraction >= 1.)
       {
         // Nothing yields: the elastic code's answer is the answer.
-        out << "  the fit stays elastic: its largest von Mises stress is "
-            << std::setprecision(4) << 100. / fraction
-            << " % of the yield strength; the elastic results follow\n"
-            << std::defaultfloat;
+        if (fraction < 1e100)
+          out << "  the fit stays elastic: its largest von Mises stress is "
+              << std::setprecision(4) << 100. / fraction
+              << " % of the yield strength; the elastic results follow\n"
+              << std::defaultfloat;
+        else
+          out << "  the fit stays elastic: no stress in the bodies that may "
+                 "yield; the elastic results follow\n";
         directory.reset();
         bodies.clear();
         coupling.reset();
-        const CaseFigures figures = run_case(parameters, out, verbose);
+        // The elastic code's run: nothing yields, so the bodies are elastic.
+        Parameters elastic        = parameters;
+        elastic.shaft.plastic     = false;
+        elastic.hub.plastic       = false;
+        const CaseFigures figures = run_case(elastic, out, verbose);
         return figures.converged ? 0 : 2;
       }
+    if (!method_note.empty())
+      out << "  " << method_note << '\n';
     out << "  first yield at " << std::setprecision(4) << 100. * fraction
         << " % of the interference (U " << 2. * parameters.geometry.d * fraction
         << " mm); " << parameters.load_path.increments
         << " increments to the full interference, "
-        << (parameters.solver.method == SolverMethod::monolithic ?
-              "monolithic (Newton on the joint)" :
-              "staggered (Dirichlet-Neumann, IQN-ILS)")
+        << (coupling->monolithic() ? "monolithic (Newton on the joint)" :
+                                     "staggered (Dirichlet-Neumann, IQN-ILS)")
         << '\n'
         << std::defaultfloat;
     solve();
@@ -133,9 +142,12 @@ namespace coaxfit
       out << "  estimate (thick-walled cylinder, 2 R_e / sqrt 3): p "
           << din_estimate << " MPa at the FE's D_p, fully plastic " << din_limit
           << " MPa\n";
-    out << "  radial model (plane stress): p " << radial.pressure
-        << " MPa, hub plastic to D " << radial.plastic_diameter[1]
-        << " mm; elastic (Lame) p " << elastic_lame << " MPa\n"
+    if (radial_valid)
+      out << "  radial model (plane stress): p " << radial.pressure
+          << " MPa, hub plastic to D " << radial.plastic_diameter[1] << " mm; ";
+    else
+      out << "  radial model (plane stress): did not converge; ";
+    out << "elastic (Lame) p " << elastic_lame << " MPa\n"
         << "  torque capacity " << torque_capacity << " N m (mu "
         << parameters.design.friction_coefficient << ")";
     if (slip_safety > 0.)
@@ -260,23 +272,29 @@ namespace coaxfit
             "p = (2 R_e / sqrt 3) (ln(D_p / D_F) + (1 - (D_p / D_aA)^2) / 2)"},
            {"pressure_at_fe_plastic_diameter", din_estimate},
            {"pressure_fully_plastic", din_limit}};
-    plasticity["radial_model"]
-      = {{"state", "plane stress"},
-         {"pressure", radial.pressure},
-         {"plastic_diameter_hub", radial.plastic_diameter[1]},
-         {"plastic_diameter_shaft", radial.plastic_diameter[0]},
-         {"fully_plastic_hub", radial.fully_plastic[1]}};
+    if (radial_valid)
+      plasticity["radial_model"]
+        = {{"state", "plane stress"},
+           {"pressure", radial.pressure},
+           {"plastic_diameter_hub", radial.plastic_diameter[1]},
+           {"plastic_diameter_shaft", radial.plastic_diameter[0]},
+           {"fully_plastic_hub", radial.fully_plastic[1]}};
+    else
+      plasticity["radial_model"] = nullptr;
     j["plasticity"] = plasticity;
     Json path;
     path["stages"]           = Json::array({"joining"});
     path["reached_fraction"] = reached;
     path["increments"]       = increments.size();
     path["failure"]          = failure;
-    j["load_path"]           = path;
+    unsigned int halvings    = 0;
+    for (const Increment &i : increments)
+      halvings += i.halvings;
+    path["halvings"]    = halvings;
+    path["method_note"] = method_note;
+    j["load_path"]      = path;
     j["coupling"]
-      = {{"method",
-          parameters.solver.method == SolverMethod::monolithic ? "monolithic" :
-                                                                 "staggered"},
+      = {{"method", coupling->monolithic() ? "monolithic" : "staggered"},
          {"steps", total_steps},
          {"body_solves", body_solves},
          {"newton_iterations",

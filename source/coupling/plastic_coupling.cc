@@ -18,8 +18,11 @@ namespace coaxfit
       std::ostringstream text;
       text << std::setprecision(3) << "the Newton solve of the body "
            << body.discretization().name() << " did not converge ("
-           << outcome.iterations << " iterations, relative residual "
-           << outcome.residual << ")";
+           << outcome.iterations << " iterations, ";
+      if (std::isfinite(outcome.residual))
+        text << "relative residual " << outcome.residual << ")";
+      else
+        text << "diverged: the residual is not a number)";
       return text.str();
     }
   } // namespace
@@ -166,6 +169,10 @@ namespace coaxfit
     Vector<double>       u_hub(n), u_shaft(n), f_hub(n), f_shaft(n);
     Vector<double>       shaft_data(n);
     IncrementOutcome     outcome;
+    // The last iterate both bodies converged at, for backtracking.
+    Vector<double> hub_field, shaft_field, last_displacement(n);
+    Vector<double> last_change(held.size());
+    unsigned int   backtracks = 0;
     for (unsigned int step = 0; step <= settings.max_steps; ++step)
       {
         // Both bodies displacement-driven at the contact points.
@@ -181,12 +188,30 @@ namespace coaxfit
                                                 shaft_outcome.iterations});
         if (!hub_outcome.converged || !shaft_outcome.converged)
           {
+            // A Newton step on the joint that the bodies cannot follow:
+            // back to the last iterate they converged at, half the step
+            // (a few times before the increment counts as failed).
+            if (step > 0 && backtracks < 6)
+              {
+                ++backtracks;
+                hub.set_solution(hub_field);
+                shaft.set_solution(shaft_field);
+                last_change *= 0.5;
+                for (unsigned int a = 0; a < held.size(); ++a)
+                  hub_displacement[held[a]]
+                    = last_displacement[held[a]] - last_change[a];
+                continue;
+              }
             outcome.failure
               = newton_failure(hub_outcome.converged ? shaft : hub,
                                hub_outcome.converged ? shaft_outcome :
                                                        hub_outcome);
             return outcome;
           }
+        backtracks          = 0;
+        hub_field           = hub.solution();
+        shaft_field         = shaft.solution();
+        last_displacement   = hub_displacement;
         double         norm = 0., scale = 0.;
         Vector<double> residual(held.size());
         for (unsigned int a = 0; a < held.size(); ++a)
@@ -224,6 +249,7 @@ namespace coaxfit
         jacobian.gauss_jordan();
         Vector<double> change(held.size());
         jacobian.vmult(change, residual);
+        last_change = change;
         for (unsigned int a = 0; a < held.size(); ++a)
           hub_displacement[held[a]] -= change[a];
       }
@@ -246,39 +272,68 @@ namespace coaxfit
     const std::vector<bool> none(n, false);
     const Vector<double>    zero(n);
     Vector<double>          u_hub(n), u_shaft(n), f_hub(n), f_shaft(n);
-    Vector<double>          hub_data(n), x(contact_force), g(n);
+    Vector<double>          data(n), x(contact_force), g(n);
     for (unsigned int i = 0; i < n; ++i)
       if (!active_points[i])
         x[i] = 0.;
+    // The body that takes the force (Neumann) and the one that takes the
+    // displacement (Dirichlet): u_hub = u_shaft + d closes the joint.
+    const bool         swap      = settings.neumann_on_hub;
+    PlasticBody       &neumann   = swap ? hub : shaft;
+    PlasticBody       &dirichlet = swap ? shaft : hub;
+    Vector<double>    &u_n       = swap ? u_hub : u_shaft;
+    Vector<double>    &u_d       = swap ? u_shaft : u_hub;
+    Vector<double>    &f_n       = swap ? f_hub : f_shaft;
+    Vector<double>    &f_d       = swap ? f_shaft : f_hub;
+    const double       d_sign    = swap ? -1. : 1.;
     IQNILSAcceleration accelerator(settings.iqn_columns, settings.iqn_filter);
     IncrementOutcome   outcome;
+    // The last force both bodies converged at, for backtracking.
+    Vector<double> neumann_field, dirichlet_field, last_x(x);
+    unsigned int   backtracks = 0;
     for (unsigned int step = 0; step <= settings.max_steps; ++step)
       {
-        // Neumann step of the shaft, Dirichlet step of the hub.
-        const NewtonOutcome shaft_outcome
-          = shaft.solve(none, zero, x, u_shaft, f_shaft);
-        if (!shaft_outcome.converged)
+        const NewtonOutcome n_outcome = neumann.solve(none, zero, x, u_n, f_n);
+        NewtonOutcome       d_outcome;
+        if (n_outcome.converged)
           {
-            outcome.failure = newton_failure(shaft, shaft_outcome);
-            return outcome;
+            for (unsigned int i = 0; i < n; ++i)
+              data[i] = u_n[i] + d_sign * interference[i];
+            d_outcome = dirichlet.solve(active_points, data, zero, u_d, f_d);
           }
-        for (unsigned int i = 0; i < n; ++i)
-          hub_data[i] = u_shaft[i] + interference[i];
-        const NewtonOutcome hub_outcome
-          = hub.solve(active_points, hub_data, zero, u_hub, f_hub);
         outcome.body_solves += 2;
         outcome.max_body_iterations = std::max({outcome.max_body_iterations,
-                                                hub_outcome.iterations,
-                                                shaft_outcome.iterations});
-        if (!hub_outcome.converged)
+                                                n_outcome.iterations,
+                                                d_outcome.iterations});
+        if (!n_outcome.converged || !d_outcome.converged)
           {
-            outcome.failure = newton_failure(hub, hub_outcome);
+            // A force the bodies cannot follow: back to the last one they
+            // converged at, half way towards the new one (a few times
+            // before the increment counts as failed).
+            if (step > 0 && backtracks < 6)
+              {
+                ++backtracks;
+                neumann.set_solution(neumann_field);
+                dirichlet.set_solution(dirichlet_field);
+                x.sadd(0.5, 0.5, last_x);
+                continue;
+              }
+            outcome.failure = n_outcome.converged ?
+                                newton_failure(dirichlet, d_outcome) :
+                                newton_failure(neumann, n_outcome);
             return outcome;
           }
-        double norm = 0., scale = 0.;
+        backtracks                          = 0;
+        neumann_field                       = neumann.solution();
+        dirichlet_field                     = dirichlet.solution();
+        last_x                              = x;
+        const NewtonOutcome  &shaft_outcome = swap ? d_outcome : n_outcome;
+        const NewtonOutcome  &hub_outcome   = swap ? n_outcome : d_outcome;
+        const Vector<double> &f_dirichlet   = f_d;
+        double                norm = 0., scale = 0.;
         for (unsigned int i = 0; i < n; ++i)
           {
-            g[i] = active_points[i] ? f_hub[i] : 0.;
+            g[i] = active_points[i] ? f_dirichlet[i] : 0.;
             norm += (g[i] - x[i]) * (g[i] - x[i]);
             scale += g[i] * g[i];
           }

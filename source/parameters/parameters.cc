@@ -582,9 +582,12 @@ namespace coaxfit
                       "Relative residual at which a body's Newton solve "
                       "(radial return, consistent tangent) has converged: "
                       "the norm of the out-of-balance nodal forces over "
-                      "the norm of the forces the body carries. Allowed: "
-                      "1e-14 to 1e-4.",
-                      Patterns::Double(1e-14, 1e-4));
+                      "the norm of the forces the body carries (a solve "
+                      "whose last correction is below 1e-12 of the field "
+                      "has converged too: round-off). Tighter than the "
+                      "coupling's tolerance, so that the coupling sees "
+                      "smooth maps. Allowed: 1e-12 to 1e-8.",
+                      Patterns::Double(1e-12, 1e-8));
     prm.add_parameter("Max Newton iterations",
                       max_newton_iterations,
                       "Newton iterations of one body solve before the "

@@ -225,6 +225,12 @@ namespace coaxfit
 
     NewtonOutcome  outcome;
     Vector<double> residual(body.n_dofs());
+    double         last_step_norm = 0.;
+    const auto    &z              = body.interface_z();
+    const double   force_floor
+      = z.empty() ? 0. :
+                    1e-14 * body.material().E * body.interface_points()[0][0]
+                      * std::max(1e-6 * z.back(), z.back() - z.front());
     for (unsigned int iteration = 0;; ++iteration)
       {
         const bool plastic = assemble_system();
@@ -242,6 +248,9 @@ namespace coaxfit
               }
           scale += std::sqrt(reactions);
         }
+        // A floor under the scale: the force of a strain of 1e-14 over the
+        // body's joint (a body without load has no force to compare with).
+        scale              = std::max(scale, force_floor);
         const double norm  = residual.l2_norm();
         outcome.iterations = iteration;
         outcome.residual   = scale > 0. ? norm / scale : norm;
@@ -251,11 +260,17 @@ namespace coaxfit
           return outcome;
         if (norm <= load_path.newton_tolerance * scale || norm == 0.)
           break;
+        // Round-off: the last correction changed the field by less than
+        // 1e-12 of itself (an ill-conditioned body, nu near 0.5 or a thin
+        // wall, whose residual cannot go below the tolerance).
+        if (iteration > 0 && last_step_norm <= 1e-12 * current.l2_norm())
+          break;
         if (iteration >= load_path.max_newton_iterations)
           return outcome;
 
         Vector<double> step(residual);
         factorization(prescribed, plastic).solve(step);
+        last_step_norm = step.l2_norm();
         ++newton_iterations;
         current += step;
         tangent_factor_valid = false;

@@ -85,12 +85,23 @@ namespace coaxfit
       std::string name;
       bool        plastic_model = false; ///< Plasticity = von Mises
       bool        yields        = false;
-      bool        fully_plastic = false;     ///< the whole wall at one section
-      double      plastic_diameter_mid = 0.; ///< mm, at the mid-plane
-      double      utilisation          = 0.; ///< of the wall at mid-plane
-      double      r_min = 0., r_max = 0., z_max = 0.; ///< plastic zone, mm
-      double      max_equivalent_plastic_strain = 0.;
-      double      max_von_mises                 = 0.; ///< MPa
+      bool        fully_plastic = false; ///< the whole wall at one section
+      /**
+       * mm, at the mid-plane: the border of the plastic zone that grew from
+       * the joint (for a hub D_p of the thick-walled cylinder); for a zone
+       * apart from the joint (a shaft yielding about its axis) its border
+       * towards the joint.
+       */
+      double plastic_diameter_mid = 0.;
+      /**
+       * At the mid-plane: (D_p - D_F) / (D_aA - D_F) for a zone grown from
+       * the joint (0 elastic, 1 through the wall), else the share of the
+       * wall's quadrature points that yield.
+       */
+      double utilisation = 0.;
+      double r_min = 0., r_max = 0., z_max = 0.; ///< plastic zone, mm
+      double max_equivalent_plastic_strain = 0.;
+      double max_von_mises                 = 0.; ///< MPa
     };
 
   private:
@@ -132,9 +143,12 @@ namespace coaxfit
     std::vector<BodyFigures> figures;
     double                   din_estimate = 0., din_limit = 0.;
     RadialPlasticFit::Result radial;
-    double                   elastic_lame    = 0.;
-    double                   torque_capacity = 0., slip_safety = 0.;
-    double                   time_setup = 0., time_solve = 0.;
+    bool                     radial_valid = false;
+    /** A line on the method chosen, printed by run() (or empty). */
+    std::string method_note;
+    double      elastic_lame    = 0.;
+    double      torque_capacity = 0., slip_safety = 0.;
+    double      time_setup = 0., time_solve = 0.;
   };
 } // namespace coaxfit
 

@@ -37,7 +37,8 @@ namespace coaxfit
    * Staggered (the principle of alternating continuity on a nonlinear
    * map): the shaft gets the contact force x (Neumann) and answers with its
    * joint displacement u_1(x); the hub gets u_1 + d (Dirichlet) and answers
-   * with its reactions G(x); interface quasi-Newton IQN-ILS (after a first
+   * with its reactions G(x) (or the roles swapped, Settings::
+   * neumann_on_hub); interface quasi-Newton IQN-ILS (after a first
    * step relaxed by one half) drives r = G(x) - x to zero. Each body solve
    * is a Newton solve of its own (PlasticBody::solve()); the hub, which
    * yields first in a press fit, is displacement-driven, so that a hub near
@@ -60,12 +61,19 @@ namespace coaxfit
     /** Settings of the coupled solve. */
     struct Settings
     {
-      bool         monolithic  = false;
-      bool         unilateral  = true;
-      double       tolerance   = 1e-8; ///< relative force residual
-      unsigned int max_steps   = 200;
-      unsigned int iqn_columns = 50;
-      double       iqn_filter  = 1e-10;
+      bool monolithic = false;
+      /**
+       * Staggered: the hub takes the Neumann step and the shaft the
+       * Dirichlet one (a shaft that yields and a hub that does not: the
+       * body that takes a force must be the one that stays elastic, as a
+       * force beyond a body's limit load has no answer).
+       */
+      bool         neumann_on_hub = false;
+      bool         unilateral     = true;
+      double       tolerance      = 1e-8; ///< relative force residual
+      unsigned int max_steps      = 200;
+      unsigned int iqn_columns    = 50;
+      double       iqn_filter     = 1e-10;
     };
 
     PlasticCoupling(PlasticBody &shaft, PlasticBody &hub, const Settings &s);
@@ -84,6 +92,13 @@ namespace coaxfit
     force() const
     {
       return contact_force;
+    }
+
+    /** Whether the monolithic solver is in use (else the staggered one). */
+    bool
+    monolithic() const
+    {
+      return settings.monolithic;
     }
 
     /** Which points are in contact. */

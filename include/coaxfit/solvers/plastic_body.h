@@ -126,6 +126,16 @@ namespace coaxfit
     void
     revert();
 
+    /**
+     * Start the next solve from @p field (a field of an earlier solve in
+     * this increment: a step the body could not follow is taken back).
+     */
+    void
+    set_solution(const Vector<double> &field)
+    {
+      current = field;
+    }
+
     /** The displacement field of the last solve. */
     const Vector<double> &
     solution() const

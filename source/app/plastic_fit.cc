@@ -1,6 +1,7 @@
 #include <coaxfit/app/plastic_fit.h>
 #include <coaxfit/base/blas_threads.h>
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/design/compound_cylinders.h>
 
 #include <algorithm>
 #include <chrono>
@@ -431,13 +432,15 @@ namespace coaxfit
         radial_valid = false;
       }
     // The elastic plane-stress pressure (Lame) for comparison.
-    const Material &s = parameters.shaft, &h = parameters.hub;
-    const double    q_hub
-      = (g.R2 * g.R2 + g.R1 * g.R1) / (g.R2 * g.R2 - g.R1 * g.R1);
-    const double q_shaft
-      = (g.R1 * g.R1 + g.R0 * g.R0) / (g.R1 * g.R1 - g.R0 * g.R0);
     elastic_lame
-      = g.d / (g.R1 * ((q_hub + h.nu) / h.E + (q_shaft - s.nu) / s.E));
+      = CompoundCylinders(
+          {{2. * g.R0, 2. * g.R1, parameters.shaft.E, parameters.shaft.nu},
+           {2. * g.R1, 2. * g.R2, parameters.hub.E, parameters.hub.nu}},
+          {2. * g.d},
+          0.,
+          0.,
+          false)
+          .pressure(0);
     // Torque capacity: friction on the normal force pi D_F l_F p_mean.
     const double length = 2. * (z.back() - z.front());
     torque_capacity     = parameters.design.friction_coefficient * p_mean * M_PI

@@ -201,9 +201,9 @@ namespace coaxfit
           {
             const std::string file = std::string(keys[b]) + ".vtu";
             check_values_for_output(bodies[b]->solution(), file);
-            std::ofstream vtu = open_result_file(directory + "/" + file);
-            bodies[b]->output_results(vtu, b, scene.oversize(b));
-            close_result_file(vtu, directory + "/" + file);
+            write_result_file(directory + "/" + file, [&](std::ostream &vtu) {
+              bodies[b]->output_results(vtu, b, scene.oversize(b));
+            });
           }
         const std::string name = directory + "/solution.pvd";
         std::ofstream     pvd  = open_result_file(name);

@@ -108,7 +108,6 @@ namespace coaxfit
             const std::string file
               = Body::key_of(parameters.bodies[b]) + ".vtu";
             check_values_for_output(fields[b], file);
-            std::ofstream out = open_result_file(directory + "/" + file);
             // The assembled drawing: each ring larger at its outer joint
             // by that joint's interference (zero at its bore if it has a
             // joint there), so that warped bodies meet where they touch.
@@ -121,8 +120,9 @@ namespace coaxfit
                 oversize           = b == 0 ? d / r_out : d / (r_out - r_in);
                 offset             = b == 0 ? 0. : -oversize * r_in;
               }
-            bodies[b]->output_results(fields[b], out, b, oversize, offset);
-            close_result_file(out, directory + "/" + file);
+            write_result_file(directory + "/" + file, [&](std::ostream &out) {
+              bodies[b]->output_results(fields[b], out, b, oversize, offset);
+            });
           }
         const std::string name = directory + "/solution.pvd";
         std::ofstream     out  = open_result_file(name);

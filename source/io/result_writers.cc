@@ -1,3 +1,5 @@
+#include <deal.II/base/exceptions.h>
+
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/io/result_writers.h>
 
@@ -70,5 +72,23 @@ namespace coaxfit
     if (output.write_report) // last: it shows the plots that exist
       writers.push_back(std::make_unique<ReportWriter>());
     return writers;
+  }
+
+
+
+  void
+  write_result_file(const std::string                         &filename,
+                    const std::function<void(std::ostream &)> &write)
+  {
+    std::ofstream out = open_result_file(filename);
+    try
+      {
+        write(out);
+      }
+    catch (const dealii::ExceptionBase &) // deal.II's ExcIO on a failed stream
+      {
+        out.setstate(std::ios::badbit);
+      }
+    close_result_file(out, filename);
   }
 } // namespace coaxfit

@@ -22,18 +22,11 @@ namespace coaxfit
     const std::string         file = directory + "/" + name;
     const Vector<double>     &field = results.fields[body];
     check_values_for_output(field, file);
-    std::ofstream out = open_result_file(file);
-    try
-      {
-        // The inner body of a joint is made larger than its mesh by d
-        // (radially): drawn in its assembled place by displacement_mm.
-        d.output_results(field, out, body, results.scene.oversize(body));
-      }
-    catch (const ExceptionBase &) // deal.II's ExcIO on a failed stream
-      {
-        out.setstate(std::ios::badbit);
-      }
-    close_result_file(out, file);
+    // The inner body of a joint is made larger than its mesh by d
+    // (radially): drawn in its assembled place by displacement_mm.
+    write_result_file(file, [&](std::ostream &out) {
+      d.output_results(field, out, body, results.scene.oversize(body));
+    });
     return name + ": displacement and stresses on "
            + std::to_string(d.n_cells()) + " cells";
   }

@@ -13,6 +13,7 @@
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/parameters/parameters.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -275,6 +276,16 @@ namespace coaxfit
   /** Close @p out and throw if anything written to it was lost. */
   void
   close_result_file(std::ofstream &out, const std::string &filename);
+
+  /**
+   * Write @p filename by @p write (a deal.II writer: VTU, PVD) between
+   * open_result_file() and close_result_file(): deal.II's ExcIO on a
+   * failed stream (a full disk) becomes the same one-line "cannot write"
+   * error as that of any other result file.
+   */
+  void
+  write_result_file(const std::string                         &filename,
+                    const std::function<void(std::ostream &)> &write);
 } // namespace coaxfit
 
 #endif

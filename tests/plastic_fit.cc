@@ -194,9 +194,6 @@ main()
   run_example("bad", "--set 'Material/Hub/Hardening modulus=210000'");
   run_example("bad", "--set 'Material/Hub/Plasticity=tresca'");
   run_example("bad",
-              "--set 'Material/Shaft/Density=7850' "
-              "--set 'Material/Hub/Density=7850' --set 'Operation/Speed=3000'");
-  run_example("bad",
               "--set 'Design/Mode=select' --set 'Design/Required torque=100'");
   {
     // The message names the file by its path: not printed.

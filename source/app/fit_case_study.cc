@@ -1,5 +1,6 @@
 #include <coaxfit/app/coaxial_fit.h>
 #include <coaxfit/app/fit_case_study.h>
+#include <coaxfit/app/plastic_fit.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/io/result_writers.h>
@@ -291,7 +292,8 @@ namespace coaxfit
     for (const std::string &name : selection_files::file_names())
       names.insert(name);
     // And an elastic-plastic run (PlasticFit) of the same case.
-    names.insert("load_path.csv");
+    for (const std::string &name : PlasticFit::file_names())
+      names.insert(name);
     return names;
   }
 } // namespace coaxfit

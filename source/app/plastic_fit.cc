@@ -2,12 +2,14 @@
 #include <coaxfit/base/blas_threads.h>
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/design/compound_cylinders.h>
+#include <coaxfit/io/result_writers.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <sstream>
 
 namespace coaxfit
 {
@@ -27,32 +29,12 @@ namespace coaxfit
   {
     const std::string why
       = "Material/Shaft or Material/Hub has Plasticity = von Mises: "
-        "elastic-plastic fits are computed for two plain cylinders in the "
-        "state of joining in this version; ";
+        "elastic-plastic fits are computed for two plain cylinders in "
+        "this version; ";
     if (parameters.sections)
       throw InputError("parameter Geometry/Shaft section or Hub section: " + why
                        + "give the plain cylinders (empty sections)");
-    // The loads of operation are the next stage of the load path.
-    const OperationParameters &o = parameters.operation;
-    std::string                load;
-    if (o.speed != 0.)
-      load = "Operation/Speed";
-    else if (o.shaft_bore_pressure != 0.)
-      load = "Operation/Shaft bore pressure";
-    else if (o.hub_outer_pressure != 0.)
-      load = "Operation/Hub outer pressure";
-    else if (o.shaft_temperature() != o.assembly_temperature)
-      load = "Operation/Shaft temperature";
-    else if (o.hub_temperature() != o.assembly_temperature)
-      load = "Operation/Hub temperature";
-    else
-      for (const Body &body : scene.bodies)
-        if (body.discretization->load().any())
-          load = "Operation/Face pressures";
-    if (!load.empty())
-      throw InputError("parameter " + load + ": " + why
-                       + "the loads of operation must be zero (they are "
-                         "the next stage of the load path, not yet here)");
+    (void)scene;
     if (parameters.mesh.reduced_volumetric_integration())
       throw InputError("parameter Mesh/Volumetric integration = reduced: " + why
                        + "elastic-plastic bodies are integrated with the "
@@ -150,22 +132,8 @@ namespace coaxfit
   double
   PlasticFit::elastic_limit_fraction()
   {
-    for (auto &body : bodies)
-      body->set_elastic_only(true);
-    const IncrementOutcome outcome = coupling->solve(interference(1.), nullptr);
-    for (auto &body : bodies)
-      body->set_elastic_only(false);
-    total_steps += outcome.steps;
-    body_solves += outcome.body_solves;
-    if (!outcome.converged)
-      throw SolverError("the elastic solve of the fit did not converge: "
-                        + outcome.failure);
-    for (auto &body : bodies)
-      body->commit();
-    coupling->commit();
-    double ratio = 0.;
-    for (const auto &body : bodies)
-      ratio = std::max(ratio, body->max_yield_ratio());
+    const double ratio
+      = elastic_yield_ratio(0., "the elastic solve of the fit");
     elastic_fraction = ratio > 0. ? 1. / ratio : 1e300;
     if (elastic_fraction < 1.)
       {
@@ -184,28 +152,84 @@ namespace coaxfit
 
 
 
-  bool
-  PlasticFit::solve()
+  double
+  PlasticFit::elastic_yield_ratio(const double       load_factor,
+                                  const std::string &what)
   {
-    const auto   start     = std::chrono::steady_clock::now();
-    const double U         = 2. * scene.joint().radial_interference;
-    const double nominal   = (1. - reached) / parameters.load_path.increments;
-    double       step      = nominal;
-    double       last_step = reached;
-    unsigned int halvings  = 0;
-    completed              = reached >= 1.;
-    while (!completed)
+    for (auto &body : bodies)
       {
-        // The last increment ends at the full interference exactly (sums
-        // of fractions fall short of 1 by round-off).
-        const double next
-          = reached + step > 1. - 1e-9 * nominal ? 1. : reached + step;
-        const double size = next - reached;
+        body->set_elastic_only(true);
+        body->set_load_factor(load_factor);
+      }
+    const IncrementOutcome outcome = coupling->solve(interference(1.), nullptr);
+    for (auto &body : bodies)
+      {
+        body->set_elastic_only(false);
+        body->set_load_factor(0.);
+      }
+    total_steps += outcome.steps;
+    body_solves += outcome.body_solves;
+    if (!outcome.converged)
+      throw SolverError(what + " did not converge: " + outcome.failure);
+    for (auto &body : bodies)
+      body->commit();
+    coupling->commit();
+    double ratio = 0.;
+    for (const auto &body : bodies)
+      ratio = std::max(ratio, body->max_yield_ratio());
+    return ratio;
+  }
+
+
+
+  double
+  PlasticFit::operation_yield_ratio()
+  {
+    // The elastic state at the full interference with the loads of
+    // operation: along the straight path from the state of assembly to it
+    // the von Mises stress (convex in the stresses) is largest at an end.
+    return elastic_yield_ratio(1., "the elastic solve of the fit in operation");
+  }
+
+
+
+  bool
+  PlasticFit::follow(StageResult &stage,
+                     const double fraction_start,
+                     const double load_start,
+                     double       t)
+  {
+    using Stage          = LoadPathParameters::Stage;
+    const double U       = 2. * scene.joint().radial_interference;
+    const double nominal = (1. - t) / parameters.load_path.increments;
+    const auto   at      = [&](const double s, double &fraction, double &load) {
+      fraction = fraction_start + s * (stage.fraction - fraction_start);
+      load     = load_start + s * (stage.load_factor - load_start);
+    };
+    double step = nominal;
+    // Joining from the elastic limit: the scaled elastic state lies on the
+    // path, so the first increment is extrapolated from it; a later stage
+    // starts from the state the one before left.
+    double            last_step = stage.kind == Stage::joining ? t : 0.;
+    unsigned int      halvings  = 0;
+    const std::string name      = to_string(stage.kind);
+    while (t < 1.)
+      {
+        // The last increment ends at the stage's end exactly (sums of
+        // fractions fall short of 1 by round-off).
+        const double next = t + step > 1. - 1e-9 * nominal ? 1. : t + step;
+        const double size = next - t;
+        double       fraction, load;
+        at(next, fraction, load);
+        const double ratio = last_step > 0. ? size / last_step : 0.;
         for (auto &body : bodies)
-          body->extrapolate(size / last_step);
-        coupling->extrapolate(size / last_step);
+          {
+            body->set_load_factor(load);
+            body->extrapolate(ratio);
+          }
+        coupling->extrapolate(ratio);
         const IncrementOutcome outcome
-          = coupling->solve(interference(next), nullptr);
+          = coupling->solve(interference(fraction), nullptr);
         total_steps += outcome.steps;
         body_solves += outcome.body_solves;
         if (!outcome.converged)
@@ -215,16 +239,25 @@ namespace coaxfit
             coupling->revert();
             if (++halvings > parameters.load_path.max_bisections)
               {
+                double f0, l0;
+                at(t, f0, l0);
                 std::ostringstream text;
-                text << std::setprecision(6) << "the load increment from "
-                     << reached * U << " to " << next * U
-                     << " mm of the interference U (increment "
-                     << increments.size() + 1 << ", halved "
+                text << std::setprecision(6) << "the " << name
+                     << " increment from ";
+                if (stage.kind == Stage::joining
+                    || stage.kind == Stage::disassembly)
+                  text << f0 * U << " to " << fraction * U
+                       << " mm of the interference U";
+                else
+                  text << "load factor " << l0 << " to " << load
+                       << " of the loads of operation";
+                text << " (increment " << increments.size() + 1
+                     << " of the load path, halved "
                      << parameters.load_path.max_bisections
                      << " times, Load path/Max bisections) failed: "
                      << outcome.failure;
                 failure = text.str();
-                break;
+                return false;
               }
             step = size / 2.;
             continue;
@@ -232,17 +265,23 @@ namespace coaxfit
         for (auto &body : bodies)
           body->commit();
         coupling->commit();
-        reached   = next;
+        t         = next;
         last_step = size;
-        increments.push_back({next,
+        if (stage.kind == Stage::joining)
+          reached = t;
+        increments.push_back({static_cast<unsigned int>(stages.size()),
+                              fraction,
+                              load,
                               outcome.steps,
                               outcome.max_body_iterations,
                               halvings,
                               mean_pressure()});
         if (verbose)
-          out << "  increment " << std::setw(3) << increments.size() << ": U "
-              << std::fixed << std::setprecision(5) << next * U << " mm ("
-              << std::setprecision(1) << 100. * next << " %), " << outcome.steps
+          out << "  " << std::setw(11) << std::left << name << std::right
+              << " increment " << std::setw(3) << increments.size() << ": U "
+              << std::fixed << std::setprecision(5) << fraction * U
+              << " mm, load factor " << std::setprecision(3) << load << ", "
+              << outcome.steps
               << " steps, Newton <= " << outcome.max_body_iterations
               << ", mean p " << std::setprecision(2)
               << increments.back().mean_pressure << " MPa" << std::defaultfloat
@@ -251,9 +290,40 @@ namespace coaxfit
         // size, never beyond: the load path is the same whichever method
         // solves it (the staggered and monolithic answers then agree to
         // the coupling tolerance, not to the path's own error).
-        step      = std::min(nominal, 2. * size);
-        halvings  = 0;
-        completed = reached >= 1.;
+        step     = std::min(nominal, 2. * size);
+        halvings = 0;
+      }
+    return true;
+  }
+
+
+
+  bool
+  PlasticFit::solve()
+  {
+    using Stage         = LoadPathParameters::Stage;
+    const auto start    = std::chrono::steady_clock::now();
+    double     fraction = 0., load = 0.;
+    completed = true;
+    for (const Stage kind : stage_list)
+      {
+        StageResult stage;
+        stage.kind        = kind;
+        stage.fraction    = kind == Stage::disassembly ? 0. : 1.;
+        stage.load_factor = kind == Stage::operation ? 1. :
+                            kind == Stage::unloading ? 0. :
+                                                       load;
+        const double t    = kind == Stage::joining ? reached : 0.;
+        stage.completed   = follow(stage, fraction, load, t);
+        capture(stage);
+        stages.push_back(std::move(stage));
+        if (!stages.back().completed)
+          {
+            completed = false;
+            break;
+          }
+        fraction = stages.back().fraction;
+        load     = stages.back().load_factor;
       }
     time_solve
       = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -377,30 +447,102 @@ namespace coaxfit
 
 
   void
+  PlasticFit::capture(StageResult &stage) const
+  {
+    const BodyDiscretization &shaft = *scene.bodies[0].discretization;
+    const BodyDiscretization &hub   = *scene.bodies[1].discretization;
+    const Vector<double>     &F     = coupling->force();
+    const auto               &z     = hub.interface_z();
+    // The state reached (a stage that failed: its last converged one).
+    stage.load_factor = bodies[0]->committed_load_factor();
+    if (!increments.empty() && increments.back().stage == stages.size())
+      stage.fraction = increments.back().fraction;
+    else if (!stage.completed)
+      stage.fraction = stages.empty() ? reached : stages.back().fraction;
+    stage.pressure.reinit(F.size());
+    for (unsigned int i = 0; i < F.size(); ++i)
+      stage.pressure[i] = F[i] / hub.interface_weights()[i];
+    const Vector<double> &p = stage.pressure;
+    stage.p_mid             = p[0];
+    stage.p_mean            = mean_pressure();
+    stage.p_min             = *std::min_element(p.begin(), p.end());
+    stage.p_max             = p[0];
+    stage.z_of_max          = z[0];
+    for (unsigned int i = 0; i < F.size(); ++i)
+      if (p[i] > stage.p_max)
+        stage.p_max = p[i], stage.z_of_max = z[i];
+    stage.separated_points = 0;
+    for (const bool a : coupling->active())
+      stage.separated_points += a ? 0 : 1;
+    stage.figures.clear();
+    for (unsigned int b = 0; b < 2; ++b)
+      {
+        stage.figures.push_back(body_figures(b));
+        // The plastic zone never shrinks (a point that yielded keeps its
+        // plastic strain); its border between the last plastic and the
+        // first elastic point is placed by the yield ratios, which only
+        // mean it while the zone grows: a stage that unloads keeps the
+        // border of the stage before.
+        BodyFigures &now = stage.figures.back();
+        if (!stages.empty())
+          {
+            const BodyFigures &before = stages.back().figures[b];
+            if (before.yields && before.utilisation > now.utilisation)
+              {
+                now.plastic_diameter_mid = before.plastic_diameter_mid;
+                now.utilisation          = before.utilisation;
+              }
+          }
+      }
+    // Torque capacity: friction on the normal force pi D_F l_F p_mean.
+    const double DF       = 2. * parameters.geometry.R1;
+    const double length   = 2. * (z.back() - z.front());
+    stage.torque_capacity = parameters.design.friction_coefficient
+                            * stage.p_mean * M_PI * DF * length * DF / 2.
+                            / 1000.;
+    stage.slip_safety
+      = parameters.design.required_torque > 0. ?
+          stage.torque_capacity / parameters.design.required_torque :
+          0.;
+
+    const Vector<double> u1
+      = shaft.interface_radial_values(bodies[0]->solution());
+    const Vector<double> u2
+      = hub.interface_radial_values(bodies[1]->solution());
+    stage.shaft_diameter_change = 2. * u1[0];
+    stage.hub_bore_change       = 2. * u2[0];
+    std::ostringstream csv;
+    csv << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n"
+        << std::setprecision(12);
+    for (unsigned int i = 0; i < p.size(); ++i)
+      csv << z[i] << ',' << p[i] << ',' << u1[i] << ',' << u2[i] << ','
+          << coupling->gap()[i] << ','
+          << (coupling->active()[i] ? "contact" : "separated") << '\n';
+    stage.contact_csv = csv.str();
+    if (parameters.output.write_vtu)
+      for (unsigned int b = 0; b < 2; ++b)
+        {
+          check_values_for_output(bodies[b]->solution(),
+                                  scene.bodies[b].discretization->name() + " ("
+                                    + to_string(stage.kind) + ")");
+          std::ostringstream vtu;
+          // After disassembly the shaft is drawn at its own size, apart.
+          const double oversize
+            = stage.kind == LoadPathParameters::Stage::disassembly ?
+                0. :
+                scene.oversize(b);
+          bodies[b]->output_results(vtu, b, oversize);
+          stage.vtu[b] = vtu.str();
+        }
+  }
+
+
+
+  void
   PlasticFit::postprocess()
   {
-    const BodyDiscretization &hub = *scene.bodies[1].discretization;
-    const Vector<double>     &F   = coupling->force();
-    const auto               &z   = hub.interface_z();
-    pressure.reinit(F.size());
-    for (unsigned int i = 0; i < F.size(); ++i)
-      pressure[i] = F[i] / hub.interface_weights()[i];
-    p_mid    = pressure[0];
-    p_mean   = mean_pressure();
-    p_min    = *std::min_element(pressure.begin(), pressure.end());
-    p_max    = pressure[0];
-    z_of_max = z[0];
-    for (unsigned int i = 0; i < F.size(); ++i)
-      if (pressure[i] > p_max)
-        p_max = pressure[i], z_of_max = z[i];
-    separated_points = 0;
-    for (const bool a : coupling->active())
-      separated_points += a ? 0 : 1;
-    figures.clear();
-    for (unsigned int b = 0; b < 2; ++b)
-      figures.push_back(body_figures(b));
-
-    const GeometryParameters &g  = parameters.geometry;
+    const StageResult        &joined = stages.front();
+    const GeometryParameters &g      = parameters.geometry;
     const double              DF = 2. * g.R1, DaA = 2. * g.R2;
     if (parameters.hub.plastic)
       {
@@ -408,7 +550,7 @@ namespace coaxfit
           parameters.hub.yield_strength,
           DF,
           DaA,
-          std::max(DF, std::min(DaA, figures[1].plastic_diameter_mid)));
+          std::max(DF, std::min(DaA, joined.figures[1].plastic_diameter_mid)));
         din_limit = elastic_plastic_hub_pressure(parameters.hub.yield_strength,
                                                  DF,
                                                  DaA,
@@ -441,12 +583,5 @@ namespace coaxfit
           0.,
           false)
           .pressure(0);
-    // Torque capacity: friction on the normal force pi D_F l_F p_mean.
-    const double length = 2. * (z.back() - z.front());
-    torque_capacity     = parameters.design.friction_coefficient * p_mean * M_PI
-                      * DF * length * DF / 2. / 1000.;
-    slip_safety = parameters.design.required_torque > 0. ?
-                    torque_capacity / parameters.design.required_torque :
-                    0.;
   }
 } // namespace coaxfit

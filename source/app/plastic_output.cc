@@ -6,6 +6,7 @@
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/io/result_writers.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -18,19 +19,87 @@ namespace coaxfit
   {
     using Json = nlohmann::ordered_json;
 
-    /** The result files of an elastic-plastic run. */
-    std::set<std::string>
-    plastic_result_files()
+    /** The file name @p base + @p extension of a stage (joining: none). */
+    std::string
+    stage_file(const std::string              &base,
+               const LoadPathParameters::Stage stage,
+               const std::string              &extension)
     {
-      return {"summary.json",
-              "parameters.prm",
-              "contact_pressure.csv",
-              "load_path.csv",
-              "shaft.vtu",
-              "hub.vtu",
-              "solution.pvd"};
+      return stage == LoadPathParameters::Stage::joining ?
+               base + extension :
+               base + "_" + to_string(stage) + extension;
+    }
+
+    /** A number for JSON, null where it is not finite. */
+    Json
+    number(const double x)
+    {
+      return std::isfinite(x) ? Json(x) : Json(nullptr);
+    }
+
+    /** The plastic figures of one body as JSON. */
+    Json
+    figures_json(const PlasticFit::BodyFigures &f)
+    {
+      Json b
+        = {{"name", f.name},
+           {"plasticity", f.plastic_model ? "von Mises" : "none"},
+           {"yields", f.yields},
+           {"fully_plastic", f.fully_plastic},
+           {"max_von_mises", f.max_von_mises},
+           {"max_equivalent_plastic_strain", f.max_equivalent_plastic_strain}};
+      if (f.yields)
+        b["plastic_zone"] = {{"diameter_at_mid_plane", f.plastic_diameter_mid},
+                             {"utilisation", f.utilisation},
+                             {"r_min", f.r_min},
+                             {"r_max", f.r_max},
+                             {"z_max", f.z_max}};
+      return b;
+    }
+
+    /** The report lines of the bodies' plastic figures. */
+    void
+    print_figures(std::ostream                               &out,
+                  const std::vector<PlasticFit::BodyFigures> &figures)
+    {
+      for (const PlasticFit::BodyFigures &f : figures)
+        {
+          out << "  " << f.name << ": ";
+          if (!f.yields)
+            out << "elastic (max von Mises " << f.max_von_mises << " MPa)\n";
+          else
+            out << "plastic to D " << f.plastic_diameter_mid
+                << " mm at the mid-plane (" << std::setprecision(0)
+                << 100. * f.utilisation << " % of the wall)"
+                << std::setprecision(2) << ", max equivalent plastic strain "
+                << std::scientific << f.max_equivalent_plastic_strain
+                << std::fixed
+                << (f.fully_plastic ? "; FULLY PLASTIC through its wall: the "
+                                      "pressure is near the limit the part "
+                                      "can carry" :
+                                      "")
+                << '\n';
+        }
     }
   } // namespace
+
+
+
+  std::set<std::string>
+  PlasticFit::file_names()
+  {
+    std::set<std::string> names
+      = {"summary.json", "parameters.prm", "load_path.csv", "solution.pvd"};
+    for (const auto stage : {LoadPathParameters::Stage::joining,
+                             LoadPathParameters::Stage::operation,
+                             LoadPathParameters::Stage::unloading,
+                             LoadPathParameters::Stage::disassembly})
+      for (const std::string base : {"contact_pressure", "shaft", "hub"})
+        names.insert(stage_file(base,
+                                stage,
+                                base == "contact_pressure" ? ".csv" : ".vtu"));
+    return names;
+  }
 
 
 
@@ -39,6 +108,13 @@ namespace coaxfit
   {
     const auto start = std::chrono::steady_clock::now();
     check_scope();
+    using Stage = LoadPathParameters::Stage;
+    stage_list  = parameters.load_path.stages(parameters.operation.has_loads(),
+                                             parameters.contact.unilateral);
+    const auto listed = [&](const Stage s) {
+      return std::find(stage_list.begin(), stage_list.end(), s)
+             != stage_list.end();
+    };
     out << "coaxfit: " << parameters.case_name << ", elastic-plastic ("
         << (parameters.shaft.plastic ? "shaft" : "")
         << (parameters.shaft.plastic && parameters.hub.plastic ? " and " : "")
@@ -48,21 +124,31 @@ namespace coaxfit
     // The target is checked before any work; it may hold the files of an
     // elastic run of the same case.
     std::set<std::string> files = all_result_file_names();
-    for (const std::string &f : plastic_result_files())
+    for (const std::string &f : file_names())
       files.insert(f);
     auto directory
       = std::make_unique<ResultDirectory>(parameters.output_directory(), files);
 
     setup_system();
+    // The state of operation first: the state of assembly is the one the
+    // load path starts from.
+    const double operation_ratio
+      = listed(Stage::operation) ? operation_yield_ratio() : 0.;
     const double fraction = elastic_limit_fraction();
-    if (fraction >= 1.)
+    if (fraction >= 1. && operation_ratio < 1. && !listed(Stage::unloading)
+        && !listed(Stage::disassembly))
       {
         // Nothing yields: the elastic code's answer is the answer.
-        if (fraction < 1e100)
-          out << "  the fit stays elastic: its largest von Mises stress is "
-              << std::setprecision(4) << 100. / fraction
-              << " % of the yield strength; the elastic results follow\n"
-              << std::defaultfloat;
+        if (fraction < 1e100 || operation_ratio > 0.)
+          {
+            out << "  the fit stays elastic: its largest von Mises stress is "
+                << std::setprecision(4) << 100. / fraction
+                << " % of the yield strength";
+            if (listed(Stage::operation))
+              out << " after joining, " << 100. * operation_ratio
+                  << " % in operation";
+            out << "; the elastic results follow\n" << std::defaultfloat;
+          }
         else
           out << "  the fit stays elastic: no stress in the bodies that may "
                  "yield; the elastic results follow\n";
@@ -78,10 +164,17 @@ namespace coaxfit
       }
     if (!method_note.empty())
       out << "  " << method_note << '\n';
-    out << "  first yield at " << std::setprecision(4) << 100. * fraction
-        << " % of the interference (U " << 2. * parameters.geometry.d * fraction
-        << " mm); " << parameters.load_path.increments
-        << " increments to the full interference, "
+    if (fraction < 1.)
+      out << "  first yield at " << std::setprecision(4) << 100. * fraction
+          << " % of the interference (U "
+          << 2. * parameters.geometry.d * fraction << " mm); ";
+    else
+      out << "  joining stays elastic (" << std::setprecision(4)
+          << 100. / fraction << " % of the yield strength); ";
+    out << "stages";
+    for (const Stage s : stage_list)
+      out << (s == stage_list.front() ? " " : ", ") << to_string(s);
+    out << ", " << parameters.load_path.increments << " increments each, "
         << (coupling->monolithic() ? "monolithic (Newton on the joint)" :
                                      "staggered (Dirichlet-Neumann, IQN-ILS)")
         << '\n'
@@ -94,9 +187,12 @@ namespace coaxfit
     (void)start;
     if (!completed)
       {
-        std::cerr << "coaxfit: " << failure << "; the state at "
-                  << std::setprecision(4) << 100. * reached
-                  << " % of the interference is written, marked not "
+        const StageResult &last = stages.back();
+        std::cerr << "coaxfit: " << failure << "; the last converged state ("
+                  << to_string(last.kind) << " at " << std::setprecision(4)
+                  << 100. * last.fraction << " % of the interference, "
+                  << 100. * last.load_factor
+                  << " % of the loads of operation) is written, marked not "
                      "converged"
                   << std::endl;
         return 2;
@@ -109,49 +205,53 @@ namespace coaxfit
   void
   PlasticFit::output_results(const std::string &directory) const
   {
-    const auto   start = std::chrono::steady_clock::now();
-    const double U     = 2. * parameters.geometry.d;
-    const double DF    = 2. * parameters.geometry.R1;
+    using Stage               = LoadPathParameters::Stage;
+    const auto         start  = std::chrono::steady_clock::now();
+    const double       U      = 2. * parameters.geometry.d;
+    const double       DF     = 2. * parameters.geometry.R1;
+    const StageResult &joined = stages.front();
 
-    // The report.
-    out << "\n  state after joining" << (completed ? "" : " (NOT COMPLETED)")
-        << ": " << increments.size() << " increments, " << total_steps
-        << " coupling steps, " << body_solves << " body solves\n"
-        << std::fixed << std::setprecision(2) << "  pressure p(0) " << p_mid
-        << " MPa, mean " << p_mean << " MPa, min " << p_min << ", max " << p_max
-        << " MPa at z " << z_of_max << " mm\n";
-    for (const BodyFigures &f : figures)
+    // The report: the state after each stage.
+    out << '\n' << std::fixed << std::setprecision(2);
+    for (const StageResult &stage : stages)
       {
-        out << "  " << f.name << ": ";
-        if (!f.yields)
-          out << "elastic (max von Mises " << f.max_von_mises << " MPa)\n";
+        out << "  state after " << to_string(stage.kind)
+            << (stage.completed ? "" : " (NOT COMPLETED)") << ": U "
+            << std::setprecision(4) << stage.fraction * U << " mm";
+        if (parameters.operation.has_loads())
+          out << ", loads of operation x " << std::setprecision(2)
+              << stage.load_factor;
+        out << '\n' << std::setprecision(2);
+        if (stage.separated_points == stage.pressure.size())
+          out << "  the joint is open everywhere (no contact)\n";
         else
-          out << "plastic to D " << f.plastic_diameter_mid
-              << " mm at the mid-plane (" << std::setprecision(0)
-              << 100. * f.utilisation << " % of the wall)"
-              << std::setprecision(2) << ", max equivalent plastic strain "
-              << std::scientific << f.max_equivalent_plastic_strain
-              << std::fixed
-              << (f.fully_plastic ? "; FULLY PLASTIC through its wall: the "
-                                    "pressure is near the limit the part "
-                                    "can carry" :
-                                    "")
-              << '\n';
+          out << "  pressure p(0) " << stage.p_mid << " MPa, mean "
+              << stage.p_mean << " MPa, min " << stage.p_min << ", max "
+              << stage.p_max << " MPa at z " << stage.z_of_max
+              << " mm; torque capacity " << stage.torque_capacity << " N m\n";
+        print_figures(out, stage.figures);
+        if (stage.kind == Stage::disassembly)
+          out << "  permanent change of diameter: hub bore "
+              << std::setprecision(5) << stage.hub_bore_change << " mm, shaft "
+              << stage.shaft_diameter_change << " mm\n"
+              << std::setprecision(2);
       }
+    out << "  " << increments.size() << " increments, " << total_steps
+        << " coupling steps, " << body_solves << " body solves\n";
     if (parameters.hub.plastic)
       out << "  estimate (thick-walled cylinder, 2 R_e / sqrt 3): p "
-          << din_estimate << " MPa at the FE's D_p, fully plastic " << din_limit
-          << " MPa\n";
+          << din_estimate << " MPa at the FE's D_p after joining, fully "
+          << "plastic " << din_limit << " MPa\n";
     if (radial_valid)
       out << "  radial model (plane stress): p " << radial.pressure
           << " MPa, hub plastic to D " << radial.plastic_diameter[1] << " mm; ";
     else
       out << "  radial model (plane stress): did not converge; ";
     out << "elastic (Lame) p " << elastic_lame << " MPa\n"
-        << "  torque capacity " << torque_capacity << " N m (mu "
-        << parameters.design.friction_coefficient << ")";
-    if (slip_safety > 0.)
-      out << ", safety against slip " << slip_safety;
+        << "  torque capacity after joining " << joined.torque_capacity
+        << " N m (mu " << parameters.design.friction_coefficient << ")";
+    if (joined.slip_safety > 0.)
+      out << ", safety against slip " << joined.slip_safety;
     out << '\n' << std::defaultfloat;
 
     // parameters.prm: repeats the run.
@@ -161,110 +261,88 @@ namespace coaxfit
       file << parameters.used_prm;
       close_result_file(file, name);
     }
-    // contact_pressure.csv, as the elastic run writes it.
-    {
-      const std::string         name = directory + "/contact_pressure.csv";
-      std::ofstream             file = open_result_file(name);
-      const BodyDiscretization &hub  = *scene.bodies[1].discretization;
-      const Vector<double>      u1
-        = scene.bodies[0].discretization->interface_radial_values(
-          bodies[0]->solution());
-      const Vector<double> u2
-        = hub.interface_radial_values(bodies[1]->solution());
-      file << "z_mm,pressure_MPa,u_r_shaft_mm,u_r_hub_mm,gap_mm,status\n"
-           << std::setprecision(12);
-      for (unsigned int i = 0; i < pressure.size(); ++i)
-        file << hub.interface_z()[i] << ',' << pressure[i] << ',' << u1[i]
-             << ',' << u2[i] << ',' << coupling->gap()[i] << ','
-             << (coupling->active()[i] ? "contact" : "separated") << '\n';
-      close_result_file(file, name);
-    }
+    // contact_pressure.csv (joining, as the elastic run writes it) and one
+    // per further stage.
+    for (const StageResult &stage : stages)
+      {
+        const std::string name
+          = directory + "/"
+            + stage_file("contact_pressure", stage.kind, ".csv");
+        std::ofstream file = open_result_file(name);
+        file << stage.contact_csv;
+        close_result_file(file, name);
+      }
     // load_path.csv: the increments.
     {
       const std::string name = directory + "/load_path.csv";
       std::ofstream     file = open_result_file(name);
-      file << "increment,fraction,U_mm,coupling_steps,max_newton_iterations,"
-              "halvings,mean_pressure_MPa\n"
+      file << "increment,stage,fraction,U_mm,load_factor,coupling_steps,"
+              "max_newton_iterations,halvings,mean_pressure_MPa\n"
            << std::setprecision(10);
       for (unsigned int k = 0; k < increments.size(); ++k)
-        file << k + 1 << ',' << increments[k].fraction << ','
-             << increments[k].fraction * U << ',' << increments[k].steps << ','
-             << increments[k].max_iterations << ',' << increments[k].halvings
-             << ',' << increments[k].mean_pressure << '\n';
+        {
+          const Increment &i = increments[k];
+          file << k + 1 << ',' << to_string(stages[i.stage].kind) << ','
+               << i.fraction << ',' << i.fraction * U << ',' << i.load_factor
+               << ',' << i.steps << ',' << i.max_iterations << ',' << i.halvings
+               << ',' << i.mean_pressure << '\n';
+        }
       close_result_file(file, name);
     }
-    // A VTU per body and solution.pvd.
+    // A VTU per body and stage; solution.pvd with the stages as time steps.
     if (parameters.output.write_vtu)
       {
         const char *keys[2] = {"shaft", "hub"};
-        for (unsigned int b = 0; b < 2; ++b)
-          {
-            const std::string file = std::string(keys[b]) + ".vtu";
-            check_values_for_output(bodies[b]->solution(), file);
-            write_result_file(directory + "/" + file, [&](std::ostream &vtu) {
-              bodies[b]->output_results(vtu, b, scene.oversize(b));
-            });
-          }
+        for (const StageResult &stage : stages)
+          for (unsigned int b = 0; b < 2; ++b)
+            write_result_file(directory + "/"
+                                + stage_file(keys[b], stage.kind, ".vtu"),
+                              [&](std::ostream &vtu) { vtu << stage.vtu[b]; });
         const std::string name = directory + "/solution.pvd";
         std::ofstream     pvd  = open_result_file(name);
         pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
                "version=\"0.1\" byte_order=\"LittleEndian\">\n<Collection>\n";
-        for (unsigned int b = 0; b < 2; ++b)
-          pvd << "<DataSet timestep=\"0\" group=\"\" part=\"" << b
-              << "\" name=\"" << keys[b] << "\" file=\"" << keys[b]
-              << ".vtu\"/>\n";
+        for (unsigned int k = 0; k < stages.size(); ++k)
+          for (unsigned int b = 0; b < 2; ++b)
+            pvd << "<DataSet timestep=\"" << k << "\" group=\"\" part=\"" << b
+                << "\" name=\"" << keys[b] << "\" file=\""
+                << stage_file(keys[b], stages[k].kind, ".vtu") << "\"/>\n";
         pvd << "</Collection>\n</VTKFile>\n";
         close_result_file(pvd, name);
       }
 
     // summary.json, last.
-    auto number = [](const double x) {
-      return std::isfinite(x) ? Json(x) : Json(nullptr);
+    const auto pressure_json = [](const StageResult &stage) {
+      return Json{{"at_mid_plane", number(stage.p_mid)},
+                  {"mean", number(stage.p_mean)},
+                  {"min", number(stage.p_min)},
+                  {"max", number(stage.p_max)},
+                  {"z_of_max", stage.z_of_max}};
     };
     Json j;
-    j["variant"]             = parameters.case_name;
-    j["model"]               = "elastic-plastic";
-    j["converged"]           = completed;
-    j["iterations"]          = total_steps;
-    const Json pressure_json = {{"at_mid_plane", number(p_mid)},
-                                {"mean", number(p_mean)},
-                                {"min", number(p_min)},
-                                {"max", number(p_max)},
-                                {"z_of_max", z_of_max},
-                                {"lame", elastic_lame}};
-    j["pressure"]            = pressure_json;
-    j["contact"]             = {{"separated_points", separated_points}};
-    j["fit"]                 = {{"U_used", U}};
-    Json joint               = {{"name", "Shaft-Hub"},
-                                {"diameter", DF},
-                                {"diametral_interference", U},
-                                {"pressure", pressure_json},
-                                {"contact",
-                                 {{"closed", separated_points == 0},
-                                  {"separated_points", separated_points}}}};
-    j["joints"]              = Json::array({joint});
+    j["variant"]     = parameters.case_name;
+    j["model"]       = "elastic-plastic";
+    j["converged"]   = completed;
+    j["iterations"]  = total_steps;
+    Json pressure    = pressure_json(joined);
+    pressure["lame"] = elastic_lame;
+    j["pressure"]    = pressure;
+    j["contact"]     = {{"separated_points", joined.separated_points}};
+    j["fit"]         = {{"U_used", U}};
+    Json joint       = {{"name", "Shaft-Hub"},
+                        {"diameter", DF},
+                        {"diametral_interference", U},
+                        {"pressure", pressure},
+                        {"contact",
+                         {{"closed", joined.separated_points == 0},
+                          {"separated_points", joined.separated_points}}}};
+    j["joints"]      = Json::array({joint});
     Json plasticity;
     plasticity["elastic_limit_fraction"] = elastic_fraction;
     plasticity["elastic_limit_U"]        = elastic_fraction * U;
     Json bodies_json                     = Json::array();
-    for (const BodyFigures &f : figures)
-      {
-        Json b = {{"name", f.name},
-                  {"plasticity", f.plastic_model ? "von Mises" : "none"},
-                  {"yields", f.yields},
-                  {"fully_plastic", f.fully_plastic},
-                  {"max_von_mises", f.max_von_mises},
-                  {"max_equivalent_plastic_strain",
-                   f.max_equivalent_plastic_strain}};
-        if (f.yields)
-          b["plastic_zone"]
-            = {{"diameter_at_mid_plane", f.plastic_diameter_mid},
-               {"utilisation", f.utilisation},
-               {"r_min", f.r_min},
-               {"r_max", f.r_max},
-               {"z_max", f.z_max}};
-        bodies_json.push_back(b);
-      }
+    for (const BodyFigures &f : joined.figures)
+      bodies_json.push_back(figures_json(f));
     plasticity["bodies"] = bodies_json;
     if (parameters.hub.plastic)
       plasticity["estimate"]
@@ -282,8 +360,47 @@ namespace coaxfit
     else
       plasticity["radial_model"] = nullptr;
     j["plasticity"] = plasticity;
+    // Every stage's state, joining first.
+    Json stages_json = Json::array();
+    for (const StageResult &stage : stages)
+      {
+        Json s = {{"name", to_string(stage.kind)},
+                  {"completed", stage.completed},
+                  {"U", stage.fraction * U},
+                  {"load_factor", stage.load_factor},
+                  {"pressure", pressure_json(stage)},
+                  {"contact",
+                   {{"closed", stage.separated_points == 0},
+                    {"open_everywhere",
+                     stage.separated_points == stage.pressure.size()},
+                    {"separated_points", stage.separated_points}}},
+                  {"torque_capacity", stage.torque_capacity}};
+        if (stage.slip_safety > 0.)
+          s["safety_slip"] = stage.slip_safety;
+        s["hub_bore_diameter_change"] = stage.hub_bore_change;
+        s["shaft_diameter_change"]    = stage.shaft_diameter_change;
+        Json b                        = Json::array();
+        for (const BodyFigures &f : stage.figures)
+          b.push_back(figures_json(f));
+        s["bodies"] = b;
+        s["files"]  = {{"contact_pressure",
+                        stage_file("contact_pressure", stage.kind, ".csv")},
+                       {"shaft",
+                       parameters.output.write_vtu ?
+                          Json(stage_file("shaft", stage.kind, ".vtu")) :
+                          Json(nullptr)},
+                       {"hub",
+                       parameters.output.write_vtu ?
+                          Json(stage_file("hub", stage.kind, ".vtu")) :
+                          Json(nullptr)}};
+        stages_json.push_back(s);
+      }
+    j["stages"] = stages_json;
     Json path;
-    path["stages"]           = Json::array({"joining"});
+    Json names = Json::array();
+    for (const Stage s : stage_list)
+      names.push_back(to_string(s));
+    path["stages"]           = names;
     path["reached_fraction"] = reached;
     path["increments"]       = increments.size();
     path["failure"]          = failure;
@@ -305,9 +422,9 @@ namespace coaxfit
            {"hub", bodies[1]->n_factorizations()}}}};
     Json design
       = {{"friction_coefficient", parameters.design.friction_coefficient},
-         {"torque_capacity", torque_capacity}};
-    if (slip_safety > 0.)
-      design["safety_slip"] = slip_safety;
+         {"torque_capacity", joined.torque_capacity}};
+    if (joined.slip_safety > 0.)
+      design["safety_slip"] = joined.slip_safety;
     j["design"]            = design;
     j["mesh"]              = {{"cells",
                                {{"shaft", scene.bodies[0].discretization->n_cells()},

@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/section_file.h>
@@ -9,6 +10,7 @@
 #include <coaxfit/parameters/parameter_reading.h>
 #include <coaxfit/parameters/parameters.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -594,7 +596,104 @@ namespace coaxfit
                       "increment counts as failed and is halved. Allowed: "
                       "2 to 200.",
                       Patterns::Integer(2, 200));
+    prm.add_parameter(
+      "Stages",
+      stages_text,
+      "Bodies with Plasticity = von Mises only: the stages of the load "
+      "path, each from the state the one before left (a body that yielded "
+      "keeps its plastic strain). joining: the interference applied (always "
+      "first); operation: the loads of the subsection Operation applied "
+      "(temperatures, speed, pressures) at the full interference; "
+      "unloading: those loads removed again (the pressure that remains "
+      "after operation); disassembly: the interference removed, the parts "
+      "apart (the residual stresses and the permanent change of the hub's "
+      "bore and the shaft's diameter; needs Contact/Unilateral = true). "
+      "Each stage is applied in Increments equal increments. auto: joining, "
+      "and operation when Operation has loads. Allowed: auto or a "
+      "comma-separated list in this order, e.g. 'joining, operation, "
+      "unloading, disassembly' (operation only with loads, unloading only "
+      "after operation).",
+      Patterns::Anything());
     prm.leave_subsection();
+  }
+
+
+
+  std::string
+  to_string(const LoadPathParameters::Stage stage)
+  {
+    switch (stage)
+      {
+        case LoadPathParameters::Stage::joining:
+          return "joining";
+        case LoadPathParameters::Stage::operation:
+          return "operation";
+        case LoadPathParameters::Stage::unloading:
+          return "unloading";
+        case LoadPathParameters::Stage::disassembly:
+          return "disassembly";
+      }
+    return "";
+  }
+
+
+
+  std::vector<LoadPathParameters::Stage>
+  LoadPathParameters::stages(const bool has_loads, const bool unilateral) const
+  {
+    const std::string entry
+      = "parameter Load path/Stages = '" + stages_text + "': ";
+    std::vector<Stage> list;
+    if (Utilities::trim(stages_text) == "auto")
+      {
+        list.push_back(Stage::joining);
+        if (has_loads)
+          list.push_back(Stage::operation);
+        return list;
+      }
+    const Stage all[4] = {Stage::joining,
+                          Stage::operation,
+                          Stage::unloading,
+                          Stage::disassembly};
+    for (const std::string &item :
+         Utilities::split_string_list(stages_text, ','))
+      {
+        const std::string name  = Utilities::trim(item);
+        bool              known = false;
+        for (const Stage s : all)
+          if (name == to_string(s))
+            {
+              known = true;
+              if (!list.empty()
+                  && static_cast<int>(s) <= static_cast<int>(list.back()))
+                throw InputError(entry + "'" + name
+                                 + "' repeated or out of order; allowed is "
+                                   "auto or a list in the order joining, "
+                                   "operation, unloading, disassembly");
+              list.push_back(s);
+            }
+        if (!known)
+          throw InputError(entry + "unknown stage '" + name
+                           + "'; allowed are joining, operation, "
+                             "unloading, disassembly (or auto)");
+      }
+    if (list.empty() || list.front() != Stage::joining)
+      throw InputError(entry + "the list starts with joining");
+    const auto has = [&](const Stage s) {
+      return std::find(list.begin(), list.end(), s) != list.end();
+    };
+    if (has(Stage::operation) && !has_loads)
+      throw InputError(entry
+                       + "operation needs loads of operation (Operation/"
+                         "Speed, temperatures or pressures); the "
+                         "subsection Operation has none");
+    if (has(Stage::unloading) && !has(Stage::operation))
+      throw InputError(entry + "unloading follows operation; list both");
+    if (has(Stage::disassembly) && !unilateral)
+      throw InputError(entry
+                       + "disassembly lets the joint open and needs "
+                         "Contact/Unilateral = true");
+    return list;
   }
 
 
@@ -1086,6 +1185,15 @@ namespace coaxfit
       }
     coupling.validate();
     contact.validate();
+    if (shaft.plastic || hub.plastic)
+      load_path.stages(operation.has_loads(), contact.unilateral);
+    else if (Utilities::trim(load_path.stages_text) != "auto")
+      throw InputError("parameter Load path/Stages = '" + load_path.stages_text
+                       + "': the stages of a load path are computed for "
+                         "bodies with Plasticity = von Mises (an elastic "
+                         "fit's states follow from its loads: the state of "
+                         "operation is reported next to the state of "
+                         "assembly); allowed is auto");
   }
 
 

@@ -49,6 +49,23 @@ namespace coaxfit
       }
     committed.assign(points.size(), PlasticState());
     trial = committed;
+
+    // The loads of operation: the thermal strain enters the return, the
+    // rest are forces.
+    BodyLoad forces       = body.load();
+    thermal_strain        = forces.thermal_strain;
+    forces.thermal_strain = 0.;
+    operation_force       = body.assemble_load_vector(forces);
+  }
+
+
+
+  void
+  PlasticBody::set_load_factor(const double factor)
+  {
+    if (factor != load_factor)
+      tangent_factor_valid = false;
+    load_factor = factor;
   }
 
 
@@ -112,8 +129,12 @@ namespace coaxfit
                 B[i] = component == 0 ? Axisymmetric::strain(N, grad, zero, r) :
                                         Axisymmetric::strain(0., zero, grad, r);
               }
-            const Axisymmetric::Vector4 strain = Axisymmetric::strain(
-              values[q][0], gradients[q][0], gradients[q][1], r);
+            Axisymmetric::Vector4 strain = Axisymmetric::strain(values[q][0],
+                                                                gradients[q][0],
+                                                                gradients[q][1],
+                                                                r);
+            for (unsigned int a = 0; a < 3; ++a)
+              strain[a] -= load_factor * thermal_strain;
             // A body without plasticity answers elastically whatever its
             // stress (its state never changes).
             const PlasticMaterial::Response used
@@ -216,12 +237,20 @@ namespace coaxfit
     last_prescribed                = prescribed;
     tangent_factor_valid           = false;
 
-    Vector<double> external(body.n_dofs());
+    // The change of the prescribed displacements enters the first Newton
+    // step through the tangent (a lifting), not as a jump of the joint's
+    // nodes alone: a jump strains the joint's cells far beyond yield in
+    // the first iterate (a new stage of the load path starts without an
+    // extrapolation that would bring the field near).
+    Vector<double> external(body.n_dofs()), lift(body.n_dofs());
+    if (load_factor != 0.)
+      external.add(load_factor, operation_force);
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (!prescribed[i])
-        external(dofs[i]) = -factor[i] * force[i];
+        external(dofs[i]) -= factor[i] * force[i];
       else
-        current(dofs[i]) = displacement[i];
+        lift(dofs[i]) = displacement[i] - current(dofs[i]);
+    bool lifting = lift.linfty_norm() > 0.;
 
     NewtonOutcome  outcome;
     Vector<double> residual(body.n_dofs());
@@ -236,6 +265,14 @@ namespace coaxfit
         const bool plastic = assemble_system();
         residual           = external;
         residual -= internal_force;
+        if (lifting)
+          {
+            // The out-of-balance forces linearized about the prescribed
+            // change: r - K du_p.
+            Vector<double> lifted(body.n_dofs());
+            tangent.vmult(lifted, lift);
+            residual -= lifted;
+          }
         double scale = external.l2_norm();
         {
           // The forces the body carries: its reactions at the fixed DoFs.
@@ -258,18 +295,29 @@ namespace coaxfit
         last_plastic       = plastic;
         if (!std::isfinite(norm))
           return outcome;
-        if (norm <= load_path.newton_tolerance * scale || norm == 0.)
+        if (!lifting
+            && (norm <= load_path.newton_tolerance * scale || norm == 0.))
           break;
         // Round-off: the last correction changed the field by less than
         // 1e-12 of itself (an ill-conditioned body, nu near 0.5 or a thin
         // wall, whose residual cannot go below the tolerance).
-        if (iteration > 0 && last_step_norm <= 1e-12 * current.l2_norm())
+        if (!lifting && iteration > 0
+            && last_step_norm <= 1e-12 * current.l2_norm())
           break;
         if (iteration >= load_path.max_newton_iterations)
           return outcome;
 
         Vector<double> step(residual);
         factorization(prescribed, plastic).solve(step);
+        if (lifting)
+          {
+            // The prescribed values reached exactly.
+            step += lift;
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (prescribed[i])
+                step(dofs[i]) = displacement[i] - current(dofs[i]);
+            lifting = false;
+          }
         last_step_norm = step.l2_norm();
         ++newton_iterations;
         current += step;
@@ -335,6 +383,7 @@ namespace coaxfit
   PlasticBody::commit()
   {
     committed                = trial;
+    committed_factor         = load_factor;
     previous_committed_field = committed_field;
     committed_field          = current;
   }
@@ -418,7 +467,8 @@ namespace coaxfit
             // elastic strain is strain - plastic strain.
             Axisymmetric::Vector4 elastic = strain;
             for (unsigned int a = 0; a < 3; ++a)
-              elastic[a] -= committed[point + q].plastic_strain[a];
+              elastic[a] -= committed[point + q].plastic_strain[a]
+                            + committed_factor * thermal_strain;
             elastic[3] -= 2. * committed[point + q].plastic_strain[3];
             stresses.push_back(Axisymmetric::stress(body.material(), elastic));
           }

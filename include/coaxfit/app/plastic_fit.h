@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,19 +19,19 @@ namespace coaxfit
    * The run of a fit whose shaft or hub may yield (Material/<body>/
    * Plasticity = von Mises), in deal.II's tutorial structure:
    * setup_system() builds the two plain cylinders and their PlasticBody
-   * solvers; solve() finds the elastic limit (one linear solve: the
-   * fraction of the interference at which the first point reaches its
-   * yield strength) and, if the full interference passes it, applies the
-   * rest in increments (Load path), each a coupled solve of the contact
+   * solvers; elastic_limit_fraction() finds the elastic limit (one linear
+   * solve: the fraction of the interference at which the first point
+   * reaches its yield strength); solve() follows the stages of the load
+   * path (Load path/Stages: joining, operation, unloading, disassembly),
+   * each in increments, each increment a coupled solve of the contact
    * (PlasticCoupling, staggered or monolithic by Solver/Method) from the
    * committed plastic states, halved when a Newton solve or the coupling
-   * fails and doubled after an easy one; postprocess() and
-   * output_results() write the state after joining.
+   * fails; the state at the end of each stage is kept (figures, contact
+   * pressure, VTU) and output_results() writes them all.
    *
-   * A fit that stays elastic is handed to the elastic code unchanged
-   * (CoaxialFit, with all its results): run() says so and returns its exit
-   * code. This version computes the joining stage of two plain cylinders
-   * without loads of operation.
+   * A fit that stays elastic along its stages (joining and operation) is
+   * handed to the elastic code unchanged (CoaxialFit, with all its
+   * results): run() says so and returns its exit code.
    */
   class PlasticFit
   {
@@ -57,13 +58,20 @@ namespace coaxfit
     double
     elastic_limit_fraction();
 
-    /** The load path from the elastic limit on; whether it was completed. */
+    /**
+     * The stages of the load path from the elastic limit on (the state at
+     * the end of each kept); whether all were completed.
+     */
     bool
     solve();
 
-    /** Pressures, plastic zones and estimates of the committed state. */
+    /** The estimates of the state after joining (radial model, formulas). */
     void
     postprocess();
+
+    /** The names of every file an elastic-plastic run may write. */
+    static std::set<std::string>
+    file_names();
 
     /** Print the report and write the result files into @p directory. */
     void
@@ -72,7 +80,9 @@ namespace coaxfit
     /** One increment of the load path, as it was solved. */
     struct Increment
     {
+      unsigned int stage;          ///< index into the stages
       double       fraction;       ///< of the full interference
+      double       load_factor;    ///< of the loads of operation
       unsigned int steps;          ///< coupling (or Newton) steps
       unsigned int max_iterations; ///< of one body's Newton solve
       unsigned int halvings;       ///< before it converged
@@ -104,6 +114,29 @@ namespace coaxfit
       double max_von_mises                 = 0.; ///< MPa
     };
 
+    /** The state at the end of one stage of the load path. */
+    struct StageResult
+    {
+      LoadPathParameters::Stage kind      = LoadPathParameters::Stage::joining;
+      bool                      completed = false;
+      double                    fraction  = 0.;   ///< of the interference
+      double                    load_factor = 0.; ///< of the operation loads
+      Vector<double>            pressure;         ///< F_i / w_i, MPa
+      double       p_mid = 0., p_mean = 0., p_min = 0., p_max = 0.; ///< MPa
+      double       z_of_max         = 0.;
+      unsigned int separated_points = 0;
+      std::vector<BodyFigures> figures;
+      double torque_capacity = 0., slip_safety = 0.; ///< N m, -
+      /**
+       * The change of the hub's bore diameter and of the shaft's outer
+       * diameter at the mid-plane of the joint (mm): after disassembly the
+       * permanent change of the parts.
+       */
+      double      hub_bore_change = 0., shaft_diameter_change = 0.;
+      std::string contact_csv; ///< contact_pressure.csv's text
+      std::string vtu[2];      ///< the shaft's and the hub's VTU
+    };
+
   private:
     /** Refuse what this version does not compute (before any work). */
     void
@@ -117,6 +150,33 @@ namespace coaxfit
     double
     mean_pressure() const;
 
+    /**
+     * Follow one stage from its progress @p t (0..1; > 0 for joining from
+     * the elastic limit): interference and load factor linear in t between
+     * the stage's start and end; whether it was completed.
+     */
+    bool
+    follow(StageResult &stage,
+           double       fraction_start,
+           double       load_start,
+           double       t);
+
+    /** Keep the committed state's figures and files in @p stage. */
+    void
+    capture(StageResult &stage) const;
+
+    /**
+     * The largest von Mises stress over the yield strength of the elastic
+     * state at the full interference and @p load_factor times the loads of
+     * operation (committed); @p what names the solve in an error.
+     */
+    double
+    elastic_yield_ratio(double load_factor, const std::string &what);
+
+    /** elastic_yield_ratio() of the state of operation. */
+    double
+    operation_yield_ratio();
+
     /** The figures of body @p b from its committed state. */
     BodyFigures
     body_figures(unsigned int b) const;
@@ -128,26 +188,22 @@ namespace coaxfit
     std::vector<std::unique_ptr<PlasticBody>> bodies; ///< shaft, hub
     std::unique_ptr<PlasticCoupling>          coupling;
 
-    double                 elastic_fraction = 0.;
-    double                 reached          = 0.;
-    bool                   completed        = false;
-    std::string            failure;
-    std::vector<Increment> increments;
-    unsigned int           total_steps = 0, body_solves = 0;
+    std::vector<LoadPathParameters::Stage> stage_list;
+    double                                 elastic_fraction = 0.;
+    double                                 reached          = 0.;
+    bool                                   completed        = false;
+    std::string                            failure;
+    std::vector<Increment>                 increments;
+    std::vector<StageResult>               stages; ///< those reached
+    unsigned int                           total_steps = 0, body_solves = 0;
 
     // After postprocess():
-    Vector<double>           pressure; ///< F_i / w_i
-    double                   p_mid = 0., p_mean = 0., p_min = 0., p_max = 0.;
-    double                   z_of_max         = 0.;
-    unsigned int             separated_points = 0;
-    std::vector<BodyFigures> figures;
     double                   din_estimate = 0., din_limit = 0.;
     RadialPlasticFit::Result radial;
     bool                     radial_valid = false;
     /** A line on the method chosen, printed by run() (or empty). */
     std::string method_note;
-    double      elastic_lame    = 0.;
-    double      torque_capacity = 0., slip_safety = 0.;
+    double      elastic_lame = 0.;
     double      time_setup = 0., time_solve = 0.;
   };
 } // namespace coaxfit

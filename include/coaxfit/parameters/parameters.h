@@ -256,10 +256,37 @@ namespace coaxfit
     double newton_tolerance = 1e-10;
     /** Newton iterations of one body solve before the increment is cut. */
     unsigned int max_newton_iterations = 25;
+    /**
+     * `Stages`: "auto" or a list from joining, operation, unloading,
+     * disassembly (stages()).
+     */
+    std::string stages_text = "auto";
+
+    /** The stages of the load path after joining, in order. */
+    enum class Stage
+    {
+      joining,
+      operation,  ///< the loads of operation applied
+      unloading,  ///< the loads of operation removed again
+      disassembly ///< the interference removed: the parts apart
+    };
+
+    /**
+     * The stages in order, joining first: "auto" is joining, then
+     * operation if @p has_loads. InputError names Load path/Stages for an
+     * unknown or repeated name, a wrong order, operation without loads,
+     * unloading without operation, disassembly with @p unilateral false.
+     */
+    std::vector<Stage>
+    stages(bool has_loads, bool unilateral) const;
 
     void
     declare_parameters(ParameterHandler &prm);
   };
+
+  /** The name of a stage of the load path as a parameter file writes it. */
+  std::string
+  to_string(LoadPathParameters::Stage stage);
 
   struct SolverParameters
   {

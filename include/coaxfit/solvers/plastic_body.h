@@ -122,6 +122,24 @@ namespace coaxfit
     double
     max_yield_ratio() const;
 
+    /**
+     * Apply @p factor times the loads of operation of the body
+     * (BodyDiscretization::load()) in the solves that follow: the thermal
+     * strain factor alpha (T - T_assembly) subtracted from the strain before
+     * the return (the yield strength does not change with temperature),
+     * the centrifugal force and the pressures on the free surfaces as
+     * external forces. 0 in the state of assembly.
+     */
+    void
+    set_load_factor(double factor);
+
+    /** The load factor of the committed state. */
+    double
+    committed_load_factor() const
+    {
+      return committed_factor;
+    }
+
     /** Go back to the committed state's field (a failed increment). */
     void
     revert();
@@ -247,6 +265,12 @@ namespace coaxfit
     std::vector<Point<2>>     points;
     std::vector<PlasticState> committed;
     std::vector<PlasticState> trial;
+
+    /** The loads of operation without the thermal strain (N per radian). */
+    Vector<double> operation_force;
+    double         thermal_strain   = 0.;
+    double         load_factor      = 0.;
+    double         committed_factor = 0.;
 
     std::vector<bool>   last_prescribed;
     bool                last_plastic = false;

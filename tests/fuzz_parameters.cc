@@ -1,4 +1,4 @@
-// Fuzz-style robustness: 80 random mutations (fixed seed) of a valid
+// Fuzz-style robustness: 40 random mutations (fixed seed) of a valid
 // parameter file, each run through the coaxfit executable with a 60 s
 // limit; the values tried include subnormal and huge numbers, white space
 // and control characters, Max steps 0-3, extreme cell counts, a file
@@ -7,7 +7,7 @@
 // parses and no NaN or infinity in any output file) or with a clean one-line
 // "coaxfit: error:" message and exit 1 and no output directory: never a crash
 // (signal, exit 3), a hang or a multi-line error. Release only
-// (fuzz_parameters.release.output): the 80 runs are mostly process start-up,
+// (fuzz_parameters.release.output): the 40 runs are mostly process start-up,
 // and the paths they reach are those of bad_input.
 
 #include "run_executable.h"
@@ -133,7 +133,7 @@ namespace
     return mutated;
   }
 
-  constexpr unsigned int n_mutations = 80;
+  constexpr unsigned int n_mutations = 40;
 
   /**
    * summary.json exists and parses as JSON (for Fit/Case = all: in each of

@@ -142,46 +142,6 @@ namespace coaxfit_test
       }
     return difference / largest;
   }
-
-  /**
-   * Refinement study of the parameter file @p file (runs into @p name_0,
-   * _1, _2): the mean pressure and
-   * the pressure at the points @p z at Global refinements 0, 1, 2, printed
-   * with the changes of the mean and its observed order of convergence.
-   */
-  inline void
-  refinement_study(const std::string         &name,
-                   const std::string         &file,
-                   const std::vector<double> &z,
-                   std::ostream              &out)
-  {
-    out << "refinement study of "
-        << std::filesystem::path(file).filename().string() << " (mean";
-    for (const double zi : z)
-      out << ", p(" << std::defaultfloat << zi << ")";
-    out << " in MPa):\n";
-    std::vector<std::vector<double>> levels;
-    for (unsigned int r = 0; r < 3; ++r)
-      {
-        const Result level = run(name + "_" + std::to_string(r),
-                                 "--set \"Mesh/Global refinements="
-                                   + std::to_string(r) + "\" " + file);
-        levels.push_back({level.mean});
-        for (const double zi : z)
-          levels.back().push_back(level.at(zi));
-        out << "  refinements " << r << ": exit " << level.exit_code;
-        for (const double v : levels.back())
-          out << "  " << std::fixed << std::setprecision(4) << v;
-        out << '\n';
-      }
-    out << "  mean: change " << std::scientific << std::setprecision(1)
-        << std::abs(levels[1][0] - levels[0][0]) / levels[2][0] << " then "
-        << std::abs(levels[2][0] - levels[1][0]) / levels[2][0]
-        << " of the value, order " << std::fixed
-        << std::log2(std::abs(levels[1][0] - levels[0][0])
-                     / std::abs(levels[2][0] - levels[1][0]))
-        << '\n';
-  }
 } // namespace coaxfit_test
 
 #endif

@@ -8,7 +8,8 @@
 //    the same section written as an outline with fillets (half model,
 //    shared joint nodes), staggered and monolithic; the written
 //    parameters.prm repeats the run from another directory.
-// 3. Refinement study of rounded_gear.prm.
+// 3. (The refinement study of rounded_gear.prm, Global refinements 0..2
+//    against its reference, is in benchmarks/sections_benchmark.py.)
 // 4. Bad files: exit 1, one line naming the entry, nothing written.
 #include "run_summary.h"
 
@@ -251,9 +252,7 @@ main()
               << '\n';
   }
 
-  // 3. Refinement study.
   std::cout << std::setprecision(6);
-  coaxfit_test::refinement_study("levels", example, {5., 10., 15.}, std::cout);
 
   // 4. Bad files.
   write("no_joint.msh", [] {

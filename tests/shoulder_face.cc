@@ -5,7 +5,8 @@
 //    independent CalculiX solution with contact on both the cylinder and
 //    the face (not in the repository), at interior points and in the
 //    mean; staggered = monolithic; meshes of their own; the shaft without
-//    its shoulder for comparison; refinement study.
+//    its shoulder for comparison (the refinement study is in
+//    benchmarks/sections_benchmark.py).
 // 2. Face pressures: on both end faces of a plain hub of the shaft's length
 //    (a .geo with named faces) they add a uniform axial stress -p, whose
 //    Poisson expansion nu p R / E takes that much off the radial
@@ -148,7 +149,6 @@ main()
                 << (close(r->mean, mean, 1e-3) ? "yes" : "NO")
                 << std::setprecision(3) << '\n';
     }
-  coaxfit_test::refinement_study("level", example, {-10., 0., 20.}, std::cout);
 
   // 2. Face pressures on a plain hub of the shaft's length.
   {

@@ -24,8 +24,8 @@
 //    the middle), a taper 1:50 shows how the cone departs from it.
 // 4. Staggered against monolithic (1e-8); meshes of their own (the hub
 //    coarser and finer) against shared joint nodes (0.1 %).
-// 5. Refinement study of the example: the mean pressure and three interior
-//    points at Global refinements 0, 1, 2, the observed order.
+// 5. (The refinement study of the example, Global refinements 0..2 against
+//    the CalculiX solution, is in benchmarks/sections_benchmark.py.)
 // 6. Bad input: exit code 1, one line naming the entry, nothing written.
 
 #include "run_executable.h"
@@ -148,8 +148,6 @@ main()
       }
   }
 
-  // 5. Refinement study.
-  coaxfit_test::refinement_study("taper", taper, {15., 25., 35.}, std::cout);
   std::cout << std::setprecision(3);
 
   // A cone at 29.9 degrees drawn with coordinates rounded to 10 digits

@@ -25,6 +25,12 @@
 //   pressure falls by exactly the elastic fit's at that growth (1e-7) and
 //   the pressure that remains lies below the joined one; staggered =
 //   monolithic in every stage (1e-6).
+// - Taken apart after it stayed elastic: the joint open everywhere, both
+//   parts back to their sizes (1e-9 mm), no increment halved; a clearance
+//   keeps its clearance; a hub driven to its bursting speed ends with exit
+//   2 naming the stage and the body (before, the increments crept towards
+//   the limit load without end, or a singular tangent was an internal
+//   error, exit 3).
 // - Bad input: unknown or misordered stages, operation without
 //   loads, unloading without operation, disassembly without unilateral
 //   contact, Stages in an elastic file: exit 1, one line naming the entry.
@@ -160,7 +166,9 @@ main()
                                  "--set 'Operation/Shaft temperature=60' ";
     const nlohmann::json p     = run_example(
       "loads_plastic",
-      loads + "--set 'Load path/Stages=joining, operation, unloading'");
+      loads
+        + "--set 'Load path/Stages=joining, operation, unloading, "
+              "disassembly'");
     const nlohmann::json e
       = run_example("loads_elastic",
                     loads + "--set 'Material/Hub/Plasticity=none'");
@@ -185,6 +193,57 @@ main()
                       e["operation"]["assembly"]["pressure_mean"],
                       1e-7)
               << " with the elastic code's state of assembly\n";
+    // Nothing yielded: the parts come apart at their drawn sizes, the
+    // joint open at every point, without a halved increment (the force
+    // that vanishes at U = 0 has no scale of its own).
+    const nlohmann::json &d = stage(p, "disassembly");
+    std::cout << "  disassembly: joint open everywhere "
+              << (d["contact"]["open_everywhere"] ? "yes" : "NO")
+              << ", the hub's bore and the shaft back to their sizes "
+              << (std::abs(d["hub_bore_diameter_change"].get<double>()) < 1e-9
+                      && std::abs(d["shaft_diameter_change"].get<double>())
+                           < 1e-9 ?
+                    "yes" :
+                    "NO")
+              << ", halved increments " << p["load_path"]["halvings"] << '\n';
+  }
+
+  std::cout << "a clearance (U -0.02 mm) taken apart:\n";
+  {
+    const nlohmann::json s
+      = run_example("clearance",
+                    "--set 'Fit/Diametral interference=-0.02' "
+                    "--set 'Load path/Stages=joining, disassembly'");
+    const nlohmann::json &d = stage(s, "disassembly");
+    std::cout << "  disassembly keeps the clearance: U " << d["U"]
+              << " mm, joint open everywhere "
+              << (d["contact"]["open_everywhere"] ? "yes" : "NO") << '\n';
+  }
+
+  std::cout << "the hub at its bursting speed (60000 1/min, a coarse mesh, "
+               "Max bisections 3):\n";
+  {
+    std::filesystem::remove_all("burst");
+    const RunResult r = run_coaxfit(
+      "burst",
+      "-q --set 'Load path/Stages=joining, operation' "
+      "--set Operation/Speed=60000 --set Material/Shaft/Density=7850 "
+      "--set Material/Hub/Density=7850 --set 'Load path/Increments=2' "
+      "--set 'Load path/Max bisections=3' --set 'Mesh/Radial cells=4' "
+      "--set 'Mesh/Axial cells=4' "
+        + example);
+    const nlohmann::json s = read_summary("burst");
+    std::cout << "  exit code " << r.exit_code << ", one line "
+              << (r.lines == 1 ? "yes" : "NO") << ", names the stage "
+              << (r.message.find("operation increment") != std::string::npos ?
+                    "yes" :
+                    "NO")
+              << " and the body "
+              << (r.message.find("body Hub") != std::string::npos ? "yes" :
+                                                                    "NO")
+              << "; the last converged state written, not converged "
+              << (!s.is_null() && !s["converged"].get<bool>() ? "yes" : "NO")
+              << '\n';
   }
 
   std::cout << "disassembly of the long fit at its mid-length:\n";

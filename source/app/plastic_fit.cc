@@ -132,8 +132,10 @@ namespace coaxfit
   double
   PlasticFit::elastic_limit_fraction()
   {
-    const double ratio
+    const unsigned int steps_before = total_steps;
+    const double       ratio
       = elastic_yield_ratio(0., "the elastic solve of the fit");
+    elastic_steps    = total_steps - steps_before;
     elastic_fraction = ratio > 0. ? 1. / ratio : 1e300;
     if (elastic_fraction < 1.)
       {
@@ -213,6 +215,17 @@ namespace coaxfit
     double            last_step = stage.kind == Stage::joining ? t : 0.;
     unsigned int      halvings  = 0;
     const std::string name      = to_string(stage.kind);
+    // The smallest increment tried: Load path/Max bisections halvings of
+    // the nominal one. A bound on the size, not on the halvings in a row:
+    // near a limit load the halved increments converge, the doubled ones
+    // after them fail, and the path would creep towards the limit forever.
+    const double smallest
+      = nominal
+        * std::ldexp(1.,
+                     -static_cast<int>(parameters.load_path.max_bisections));
+    if (stage.kind == Stage::joining && t >= 1.)
+      // Joining stayed elastic: the elastic solve is its one increment.
+      increments.push_back({0, 1., 0., elastic_steps, 1, 0, mean_pressure()});
     while (t < 1.)
       {
         // The last increment ends at the stage's end exactly (sums of
@@ -228,6 +241,8 @@ namespace coaxfit
             body->extrapolate(ratio);
           }
         coupling->extrapolate(ratio);
+        // The end of a disassembly: the shaft withdrawn, the parts apart.
+        coupling->set_separated(stage.kind == Stage::disassembly && next == 1.);
         const IncrementOutcome outcome
           = coupling->solve(interference(fraction), nullptr);
         total_steps += outcome.steps;
@@ -237,12 +252,14 @@ namespace coaxfit
             for (auto &body : bodies)
               body->revert();
             coupling->revert();
-            if (++halvings > parameters.load_path.max_bisections)
+            ++total_halvings;
+            ++halvings;
+            if (size / 2. < smallest * (1. - 1e-9))
               {
                 double f0, l0;
                 at(t, f0, l0);
                 std::ostringstream text;
-                text << std::setprecision(6) << "the " << name
+                text << std::setprecision(9) << "the " << name
                      << " increment from ";
                 if (stage.kind == Stage::joining
                     || stage.kind == Stage::disassembly)
@@ -251,11 +268,18 @@ namespace coaxfit
                 else
                   text << "load factor " << l0 << " to " << load
                        << " of the loads of operation";
-                text << " (increment " << increments.size() + 1
-                     << " of the load path, halved "
+                text << std::setprecision(3) << " (increment "
+                     << increments.size() + 1 << " of the load path, "
+                     << size / nominal << " x the stage's nominal "
+                     << "increment, the smallest Load path/Max bisections = "
                      << parameters.load_path.max_bisections
-                     << " times, Load path/Max bisections) failed: "
-                     << outcome.failure;
+                     << " allows) failed: " << outcome.failure;
+                // A body plastic through its wall carries no more load.
+                for (unsigned int b = 0; b < 2; ++b)
+                  if (body_figures(b).fully_plastic)
+                    text << "; the " << scene.bodies[b].discretization->name()
+                         << " is plastic through its wall: the load may pass "
+                            "the limit load it can carry";
                 failure = text.str();
                 return false;
               }
@@ -308,8 +332,13 @@ namespace coaxfit
     for (const Stage kind : stage_list)
       {
         StageResult stage;
-        stage.kind        = kind;
-        stage.fraction    = kind == Stage::disassembly ? 0. : 1.;
+        stage.kind = kind;
+        // A disassembly takes the interference away (a clearance has none
+        // to take: the parts are only pulled apart).
+        stage.fraction    = kind == Stage::disassembly
+                             && scene.joint().radial_interference > 0. ?
+                              0. :
+                              1.;
         stage.load_factor = kind == Stage::operation ? 1. :
                             kind == Stage::unloading ? 0. :
                                                        load;
@@ -538,6 +567,19 @@ namespace coaxfit
 
 
 
+  const PlasticFit::StageResult &
+  PlasticFit::least_torque_stage() const
+  {
+    const StageResult *least = &stages.front();
+    for (const StageResult &stage : stages)
+      if (stage.kind != LoadPathParameters::Stage::disassembly
+          && stage.torque_capacity < least->torque_capacity)
+        least = &stage;
+    return *least;
+  }
+
+
+
   void
   PlasticFit::postprocess()
   {
@@ -564,8 +606,10 @@ namespace coaxfit
                            400);
     try
       {
-        radial       = model.solve(g.d, 100);
-        radial_valid = true;
+        // A clearance has no pressure to model.
+        radial_valid = g.d > 0.;
+        if (radial_valid)
+          radial = model.solve(g.d, 100);
       }
     catch (const SolverError &)
       {

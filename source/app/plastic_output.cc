@@ -60,7 +60,8 @@ namespace coaxfit
     /** The report lines of the bodies' plastic figures. */
     void
     print_figures(std::ostream                               &out,
-                  const std::vector<PlasticFit::BodyFigures> &figures)
+                  const std::vector<PlasticFit::BodyFigures> &figures,
+                  const bool                                  loaded)
     {
       for (const PlasticFit::BodyFigures &f : figures)
         {
@@ -74,10 +75,12 @@ namespace coaxfit
                 << std::setprecision(2) << ", max equivalent plastic strain "
                 << std::scientific << f.max_equivalent_plastic_strain
                 << std::fixed
-                << (f.fully_plastic ? "; FULLY PLASTIC through its wall: the "
-                                      "pressure is near the limit the part "
-                                      "can carry" :
-                                      "")
+                << (!f.fully_plastic ? "" :
+                    loaded           ? "; FULLY PLASTIC through its wall: the "
+                                       "pressure is near the limit the part "
+                                       "can carry" :
+                                       "; plastic through its wall (in an "
+                                       "earlier stage)")
                 << '\n';
         }
     }
@@ -229,30 +232,62 @@ namespace coaxfit
               << stage.p_mean << " MPa, min " << stage.p_min << ", max "
               << stage.p_max << " MPa at z " << stage.z_of_max
               << " mm; torque capacity " << stage.torque_capacity << " N m\n";
-        print_figures(out, stage.figures);
+        print_figures(out,
+                      stage.figures,
+                      stage.kind == Stage::joining
+                        || stage.kind == Stage::operation);
         if (stage.kind == Stage::disassembly)
-          out << "  permanent change of diameter: hub bore "
-              << std::setprecision(5) << stage.hub_bore_change << " mm, shaft "
-              << stage.shaft_diameter_change << " mm\n"
-              << std::setprecision(2);
+          {
+            // Below the digits printed (a body that stayed elastic comes
+            // back to round-off): no change.
+            const auto shown
+              = [](const double x) { return std::abs(x) < 5e-6 ? 0. : x; };
+            out << "  permanent change of diameter: hub bore "
+                << std::setprecision(5) << shown(stage.hub_bore_change)
+                << " mm, shaft " << shown(stage.shaft_diameter_change)
+                << " mm\n"
+                << std::setprecision(2);
+          }
       }
     out << "  " << increments.size() << " increments, " << total_steps
         << " coupling steps, " << body_solves << " body solves\n";
-    if (parameters.hub.plastic)
+    if (parameters.hub.plastic && joined.figures[1].yields)
       out << "  estimate (thick-walled cylinder, 2 R_e / sqrt 3): p "
           << din_estimate << " MPa at the FE's D_p after joining, fully "
           << "plastic " << din_limit << " MPa\n";
+    else if (parameters.hub.plastic)
+      out << "  estimate (thick-walled cylinder): the hub stays elastic in "
+          << "joining, fully plastic at " << din_limit << " MPa\n";
     if (radial_valid)
       out << "  radial model (plane stress): p " << radial.pressure
           << " MPa, hub plastic to D " << radial.plastic_diameter[1] << " mm; ";
     else
-      out << "  radial model (plane stress): did not converge; ";
-    out << "elastic (Lame) p " << elastic_lame << " MPa\n"
+      out << "  radial model (plane stress): "
+          << (parameters.geometry.d > 0. ? "did not converge; " :
+                                           "no interference (a clearance)");
+    if (parameters.geometry.d > 0.)
+      out << "elastic (Lame) p " << elastic_lame << " MPa";
+    out << "\n"
         << "  torque capacity after joining " << joined.torque_capacity
         << " N m (mu " << parameters.design.friction_coefficient << ")";
     if (joined.slip_safety > 0.)
       out << ", safety against slip " << joined.slip_safety;
-    out << '\n' << std::defaultfloat;
+    out << '\n';
+    const StageResult &least = least_torque_stage();
+    if (&least != &joined)
+      {
+        out << "  least torque capacity " << least.torque_capacity
+            << " N m, after " << to_string(least.kind);
+        if (least.slip_safety > 0. || parameters.design.required_torque > 0.)
+          out << ", safety against slip " << least.slip_safety
+              << (least.slip_safety < 1. ? " (BELOW 1: the fit slips)" : "");
+        out << '\n';
+      }
+    if (parameters.output.write_report || parameters.output.write_plots)
+      out << "  (report.md and the plots are written by the elastic code; "
+             "an elastic-plastic run writes summary.json, the CSV and VTU "
+             "files)\n";
+    out << std::defaultfloat;
 
     // parameters.prm: repeats the run.
     {
@@ -348,7 +383,8 @@ namespace coaxfit
       plasticity["estimate"]
         = {{"formula",
             "p = (2 R_e / sqrt 3) (ln(D_p / D_F) + (1 - (D_p / D_aA)^2) / 2)"},
-           {"pressure_at_fe_plastic_diameter", din_estimate},
+           {"pressure_at_fe_plastic_diameter",
+            joined.figures[1].yields ? Json(din_estimate) : Json(nullptr)},
            {"pressure_fully_plastic", din_limit}};
     if (radial_valid)
       plasticity["radial_model"]
@@ -404,12 +440,9 @@ namespace coaxfit
     path["reached_fraction"] = reached;
     path["increments"]       = increments.size();
     path["failure"]          = failure;
-    unsigned int halvings    = 0;
-    for (const Increment &i : increments)
-      halvings += i.halvings;
-    path["halvings"]    = halvings;
-    path["method_note"] = method_note;
-    j["load_path"]      = path;
+    path["halvings"]         = total_halvings;
+    path["method_note"]      = method_note;
+    j["load_path"]           = path;
     j["coupling"]
       = {{"method", coupling->monolithic() ? "monolithic" : "staggered"},
          {"steps", total_steps},
@@ -425,6 +458,16 @@ namespace coaxfit
          {"torque_capacity", joined.torque_capacity}};
     if (joined.slip_safety > 0.)
       design["safety_slip"] = joined.slip_safety;
+    {
+      // The stage in which the fit carries least (disassembly aside).
+      const StageResult &least = least_torque_stage();
+      design["least_torque_capacity"]
+        = {{"stage", to_string(least.kind)},
+           {"torque_capacity", least.torque_capacity},
+           {"safety_slip",
+            parameters.design.required_torque > 0. ? Json(least.slip_safety) :
+                                                     Json(nullptr)}};
+    }
     j["design"]            = design;
     j["mesh"]              = {{"cells",
                                {{"shaft", scene.bodies[0].discretization->n_cells()},

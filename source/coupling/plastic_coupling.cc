@@ -16,6 +16,10 @@ namespace coaxfit
     newton_failure(const PlasticBody &body, const NewtonOutcome &outcome)
     {
       std::ostringstream text;
+      if (outcome.singular)
+        return "the tangent of the body " + body.discretization().name()
+               + " is singular (no stiffness left: a body plastic through "
+                 "its wall at its limit load)";
       text << std::setprecision(3) << "the Newton solve of the body "
            << body.discretization().name() << " did not converge ("
            << outcome.iterations << " iterations, ";
@@ -46,6 +50,20 @@ namespace coaxfit
     previous_force         = contact_force;
     previous_displacement  = hub_displacement;
     committed_active       = active_points;
+    committed_gaps         = gaps;
+  }
+
+
+
+  void
+  PlasticCoupling::set_separated(const bool apart)
+  {
+    separated = apart;
+    if (apart)
+      {
+        active_points.assign(active_points.size(), false);
+        contact_force = 0;
+      }
   }
 
 
@@ -80,6 +98,7 @@ namespace coaxfit
   {
     contact_force    = committed_force;
     hub_displacement = committed_displacement;
+    gaps             = committed_gaps;
     active_points    = committed_active;
   }
 
@@ -93,6 +112,8 @@ namespace coaxfit
     committed_force        = contact_force;
     committed_displacement = hub_displacement;
     committed_active       = active_points;
+    committed_gaps         = gaps;
+    peak_force             = std::max(peak_force, contact_force.l2_norm());
   }
 
 
@@ -119,7 +140,7 @@ namespace coaxfit
             total.failure = outcome.failure;
             return total;
           }
-        if (!settings.unilateral || !update_active_set())
+        if (!settings.unilateral || separated || !update_active_set())
           {
             total.converged = true;
             return total;
@@ -221,7 +242,7 @@ namespace coaxfit
             scale += f_hub[held[a]] * f_hub[held[a]];
           }
         norm             = std::sqrt(norm);
-        scale            = std::sqrt(scale);
+        scale            = force_scale(std::sqrt(scale));
         outcome.residual = scale > 0. ? norm / scale : norm;
         outcome.steps    = step;
         contact_force    = f_hub;
@@ -338,7 +359,7 @@ namespace coaxfit
             scale += g[i] * g[i];
           }
         norm             = std::sqrt(norm);
-        scale            = std::sqrt(scale);
+        scale            = force_scale(std::sqrt(scale));
         outcome.residual = scale > 0. ? norm / scale : norm;
         outcome.steps    = step + 1;
         contact_force    = g;

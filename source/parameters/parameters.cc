@@ -651,15 +651,28 @@ namespace coaxfit
           list.push_back(Stage::operation);
         return list;
       }
-    const Stage all[4] = {Stage::joining,
-                          Stage::operation,
-                          Stage::unloading,
-                          Stage::disassembly};
-    for (const std::string &item :
-         Utilities::split_string_list(stages_text, ','))
+    const Stage              all[4] = {Stage::joining,
+                                       Stage::operation,
+                                       Stage::unloading,
+                                       Stage::disassembly};
+    std::vector<std::string> items;
+    {
+      std::istringstream text(stages_text);
+      std::string        item;
+      while (std::getline(text, item, ','))
+        items.push_back(item);
+      if (!stages_text.empty() && stages_text.back() == ',')
+        items.emplace_back();
+    }
+    for (const std::string &item : items)
       {
-        const std::string name  = Utilities::trim(item);
-        bool              known = false;
+        const std::string name = Utilities::trim(item);
+        if (name.empty())
+          throw InputError(entry
+                           + "an empty item; allowed is auto or a list "
+                             "such as 'joining, operation, unloading, "
+                             "disassembly'");
+        bool known = false;
         for (const Stage s : all)
           if (name == to_string(s))
             {

@@ -308,7 +308,18 @@ namespace coaxfit
           return outcome;
 
         Vector<double> step(residual);
-        factorization(prescribed, plastic).solve(step);
+        try
+          {
+            factorization(prescribed, plastic).solve(step);
+          }
+        catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
+          {
+            // A tangent without stiffness in some direction (a perfectly
+            // plastic body yielding through its wall at its limit load): a
+            // failed solve, which the caller cuts, never an internal error.
+            outcome.singular = true;
+            return outcome;
+          }
         if (lifting)
           {
             // The prescribed values reached exactly.

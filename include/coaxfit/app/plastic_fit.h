@@ -161,6 +161,13 @@ namespace coaxfit
            double       load_start,
            double       t);
 
+    /**
+     * The stage whose torque capacity is least (disassembly aside; the
+     * first of equals).
+     */
+    const StageResult &
+    least_torque_stage() const;
+
     /** Keep the committed state's figures and files in @p stage. */
     void
     capture(StageResult &stage) const;
@@ -196,6 +203,8 @@ namespace coaxfit
     std::vector<Increment>                 increments;
     std::vector<StageResult>               stages; ///< those reached
     unsigned int                           total_steps = 0, body_solves = 0;
+    unsigned int total_halvings = 0; ///< failed increments, all stages
+    unsigned int elastic_steps  = 0; ///< of the elastic solve of joining
 
     // After postprocess():
     double                   din_estimate = 0., din_limit = 0.;

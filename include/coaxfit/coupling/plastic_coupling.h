@@ -5,6 +5,7 @@
 
 #include <coaxfit/solvers/plastic_body.h>
 
+#include <algorithm>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -138,6 +139,15 @@ namespace coaxfit
     void
     commit();
 
+    /**
+     * With @p apart, the parts apart in the next solves (the end of a
+     * disassembly): every point released and kept released whatever its
+     * gap (a hub that never yielded meets the withdrawn shaft at a gap of
+     * round-off); without, the active set is updated again.
+     */
+    void
+    set_separated(bool apart);
+
   private:
     /** The staggered process for a fixed active set. */
     IncrementOutcome
@@ -166,6 +176,21 @@ namespace coaxfit
     Vector<double>    previous_force;
     Vector<double>    previous_displacement;
     std::vector<bool> committed_active;
+    Vector<double>    committed_gaps;
+    bool              separated = false;
+    /**
+     * The largest norm of a committed contact force: a floor (1e-6 of it)
+     * under the scale of the force residual, which has none where the
+     * force vanishes (a joint opening everywhere).
+     */
+    double peak_force = 0.;
+
+    /** The scale of a force residual: @p norm, at least the floor. */
+    double
+    force_scale(double norm) const
+    {
+      return std::max(norm, 1e-6 * peak_force);
+    }
   };
 } // namespace coaxfit
 

@@ -20,8 +20,8 @@ namespace coaxfit
 {
   /**
    * How one Newton solve of a body ended: whether it converged, in how
-   * many iterations, the relative residual reached and whether any point
-   * yields in the state found.
+   * many iterations, the relative residual reached, whether any point
+   * yields in the state found and whether its tangent was singular.
    */
   struct NewtonOutcome
   {
@@ -29,6 +29,8 @@ namespace coaxfit
     unsigned int iterations = 0;
     double       residual   = 0.;
     bool         plastic    = false;
+    /** The tangent could not be factorized (no stiffness left). */
+    bool singular = false;
   };
 
   /**

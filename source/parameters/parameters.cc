@@ -575,9 +575,12 @@ namespace coaxfit
                       Patterns::Integer(1, 10000));
     prm.add_parameter("Max bisections",
                       max_bisections,
-                      "How often one increment may be halved before the "
-                      "run stops as not converged (exit 2, naming the body "
-                      "and the increment). Allowed: 0 to 30.",
+                      "The smallest increment is the nominal one halved "
+                      "this often: an increment that fails at that size "
+                      "stops the run as not converged (exit 2, naming the "
+                      "stage, the body and the increment; near a limit "
+                      "load the increments would otherwise creep towards "
+                      "it without end). Allowed: 0 to 30.",
                       Patterns::Integer(0, 30));
     prm.add_parameter("Newton tolerance",
                       newton_tolerance,

@@ -18,6 +18,7 @@
 
 #include "run_executable.h"
 #include "run_summary.h"
+#include "yielding_hub_example.h"
 
 #include <cmath>
 #include <filesystem>
@@ -30,23 +31,6 @@ using namespace coaxfit_test;
 
 namespace
 {
-  const std::string example
-    = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/yielding_hub.prm";
-
-  /** Run the example with @p arguments in @p dir. */
-  RunResult
-  run_example(const std::string &dir, const std::string &arguments)
-  {
-    std::filesystem::remove_all(dir);
-    const RunResult r = run_coaxfit(dir, arguments + " " + example);
-    std::cout << "  exit code " << r.exit_code;
-    if (!r.message.empty())
-      std::cout << ", " << r.lines << " line(s): " << r.message;
-    else
-      std::cout << '\n';
-    return r;
-  }
-
   /** The pressure column of contact_pressure.csv in @p dir (and z). */
   std::vector<double>
   pressures(const std::string &dir, std::vector<double> *z_out = nullptr)
@@ -193,13 +177,13 @@ main()
   run_example("bad", "--set 'Material/Hub/Yield strength=0'");
   run_example("bad", "--set 'Material/Hub/Hardening modulus=210000'");
   run_example("bad", "--set 'Material/Hub/Plasticity=tresca'");
-  run_example("bad",
-              "--set 'Design/Mode=select' --set 'Design/Required torque=100'");
+  run_example("bad", "--set 'Fit/ISO fit=H7/s6' --set 'Fit/Case=all'");
   {
     // The message names the file by its path: not printed.
     const RunResult r
       = run_coaxfit("bad",
-                    "--sweep 'Fit/Diametral interference=0.1,0.2' " + example);
+                    "--sweep 'Fit/Diametral interference=0.1,0.2' "
+                      + yielding_hub_example);
     std::cout << "  --sweep: exit code " << r.exit_code << ", " << r.lines
               << " line(s), "
               << (r.message.find("runs on its own") != std::string::npos ?

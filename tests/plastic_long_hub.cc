@@ -17,6 +17,7 @@
 
 #include "run_executable.h"
 #include "run_summary.h"
+#include "yielding_hub_example.h"
 
 #include <filesystem>
 #include <iomanip>
@@ -26,33 +27,11 @@ using namespace coaxfit_test;
 
 namespace
 {
-  const std::string example
-    = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/yielding_hub.prm";
-
-  /** The example's rings. */
-  coaxfit::RadialPlasticFit
-  radial_model(const coaxfit::RadialPlasticFit::State state)
-  {
-    coaxfit::Material steel;
-    steel.E               = 210000.;
-    steel.nu              = 0.3;
-    coaxfit::Material hub = steel;
-    hub.yield_strength    = 300.;
-    hub.plastic           = true;
-    return coaxfit::RadialPlasticFit({0., 25., steel},
-                                     {25., 50., hub},
-                                     state,
-                                     500);
-  }
-
   /** Run the example with @p arguments in @p dir; its summary. */
   nlohmann::json
-  run_example(const std::string &dir, const std::string &arguments)
+  run_into(const std::string &dir, const std::string &arguments)
   {
-    std::filesystem::remove_all(dir);
-    const RunResult r = run_coaxfit(dir, arguments + " " + example);
-    std::cout << "  exit code " << r.exit_code
-              << (r.message.empty() ? "" : ", message: " + r.message) << '\n';
+    run_example(dir, arguments);
     return read_summary(dir);
   }
 
@@ -97,7 +76,7 @@ main()
       + "--set 'Geometry/Hub length=800' --set 'Geometry/Shaft length=800' ";
 
   std::cout << "long fit, U 0.16 mm (the hub plastic to about D 72 mm):\n";
-  compare(run_example("long", long_fit),
+  compare(run_into("long", long_fit),
           radial_model(
             coaxfit::RadialPlasticFit::State::generalized_plane_strain)
             .solve(0.08, 100),
@@ -106,17 +85,17 @@ main()
 
   std::cout << "long fit, U 0.6 mm (far beyond full plasticity):\n";
   compare(
-    run_example("limit", long_fit + "--set 'Fit/Diametral interference=0.6'"),
+    run_into("limit", long_fit + "--set 'Fit/Diametral interference=0.6'"),
     radial_model(coaxfit::RadialPlasticFit::State::generalized_plane_strain)
       .solve(0.3, 100),
     0.01,
     false);
 
   std::cout << "thin disc (5 mm), U 0.16 mm:\n";
-  compare(run_example("disc",
-                      mesh
-                        + "--set 'Geometry/Hub length=5' "
-                          "--set 'Geometry/Shaft length=5'"),
+  compare(run_into("disc",
+                   mesh
+                     + "--set 'Geometry/Hub length=5' "
+                       "--set 'Geometry/Shaft length=5'"),
           radial_model(coaxfit::RadialPlasticFit::State::plane_stress)
             .solve(0.08, 100),
           0.005,

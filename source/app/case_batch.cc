@@ -90,7 +90,10 @@ namespace coaxfit
            CoaxialFit        *prepared)
   {
     CaseFigures figures;
-    if (parameters.shaft.plastic || parameters.hub.plastic)
+    // A selection of a fit whose hub may yield is one of a single file
+    // (main refuses it in a study up front).
+    if ((parameters.shaft.plastic || parameters.hub.plastic)
+        && parameters.design.mode != DesignMode::select)
       throw InputError(
         "parameter Material/"
         + std::string(parameters.hub.plastic ? "Hub" : "Shaft")

@@ -105,17 +105,28 @@ namespace coaxfit
 
     // One case set up once; every state of the selection reuses its
     // meshes and factorizations.
+    // The elastic states: the bodies as elastic (a selection that lets
+    // the hub yield follows its load paths with PlasticFit).
+    Parameters elastic    = parameters;
+    elastic.shaft.plastic = false;
+    elastic.hub.plastic   = false;
     std::ostringstream quiet;
-    CoaxialFit fit(FitSelection::at_interference(at_assembly(parameters),
-                                                 parameters.fit_limits.used()),
+    CoaxialFit         fit(FitSelection::at_interference(at_assembly(elastic),
+                                                 elastic.fit_limits.used()),
                    quiet,
                    false);
     fit.setup_system();
-    const FitSelection selection(parameters, [&](const Parameters &p) {
-      fit.reuse_for(p);
-      fit.solve(nullptr);
-      return fit.solved_state();
-    });
+    const FitSelection selection(
+      parameters,
+      [&](const Parameters &p) {
+        Parameters e    = p;
+        e.shaft.plastic = false;
+        e.hub.plastic   = false;
+        fit.reuse_for(e);
+        fit.solve(nullptr);
+        return fit.solved_state();
+      },
+      &FitSelectionStudy::follow_load_path);
 
     std::ostringstream section;
     selection.print_markdown(section);
@@ -126,7 +137,14 @@ namespace coaxfit
     bool        converged = true;
     std::string first_fit;
     Verdict     verdict = Verdict::no_fit(selection.conflict());
-    if (selection.found())
+    if (selection.found() && selection.allowed_utilisation > 0.)
+      {
+        // The hub may yield: the first fit's ends on their load paths.
+        first_fit = selection.fits.front().name;
+        converged = check_plastic(
+          selection, first_fit, staging, section.str(), verdict);
+      }
+    else if (selection.found())
       {
         // The first fit, or a taper's band of push-on distances, checked
         // as with Fit/Case = all.
@@ -170,17 +188,7 @@ namespace coaxfit
     else
       {
         // No fit: the verdict and the selection are the report.
-        if (parameters.output.write_report)
-          {
-            const std::string name   = staging + "/report.md";
-            std::ofstream     report = open_result_file(name);
-            report << "# coaxfit report: fit selection at D_F = "
-                   << parameters.drawing.joint_diameter
-                   << " mm\n\n## Verdict\n\n"
-                   << verdict.line() << "\n\n"
-                   << section.str();
-            close_result_file(report, name);
-          }
+        write_report(staging, "", verdict, section.str());
         out << verdict.line() << '\n';
       }
 
@@ -198,5 +206,25 @@ namespace coaxfit
       for (const std::string &line : lines)
         out << "  " << line << '\n';
     return converged;
+  }
+
+
+
+  void
+  FitSelectionStudy::write_report(const std::string &directory,
+                                  const std::string &title,
+                                  const Verdict     &verdict,
+                                  const std::string &body) const
+  {
+    if (!parameters.output.write_report)
+      return;
+    const std::string name   = directory + "/report.md";
+    std::ofstream     report = open_result_file(name);
+    report << "# coaxfit report: fit selection at D_F = "
+           << parameters.drawing.joint_diameter << " mm" << title
+           << "\n\n## Verdict\n\n"
+           << verdict.line() << "\n\n"
+           << body;
+    close_result_file(report, name);
   }
 } // namespace coaxfit

@@ -441,7 +441,8 @@ namespace
 
         const Parameters parameters
           = read_parameters(line.filenames[0], line.overrides);
-        if (parameters.shaft.plastic || parameters.hub.plastic)
+        if ((parameters.shaft.plastic || parameters.hub.plastic)
+            && parameters.design.mode == DesignMode::check)
           {
             // A body that may yield: the load path of PlasticFit (which
             // hands a fit that stays elastic to the elastic code).

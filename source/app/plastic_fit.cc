@@ -526,9 +526,9 @@ namespace coaxfit
     // Torque capacity: friction on the normal force pi D_F l_F p_mean.
     const double DF       = 2. * parameters.geometry.R1;
     const double length   = 2. * (z.back() - z.front());
+    stage.normal_force    = stage.p_mean * M_PI * DF * length;
     stage.torque_capacity = parameters.design.friction_coefficient
-                            * stage.p_mean * M_PI * DF * length * DF / 2.
-                            / 1000.;
+                            * stage.normal_force * DF / 2. / 1000.;
     stage.slip_safety
       = parameters.design.required_torque > 0. ?
           stage.torque_capacity / parameters.design.required_torque :

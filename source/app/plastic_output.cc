@@ -109,15 +109,9 @@ namespace coaxfit
   int
   PlasticFit::run()
   {
-    const auto start = std::chrono::steady_clock::now();
     check_scope();
-    using Stage = LoadPathParameters::Stage;
-    stage_list  = parameters.load_path.stages(parameters.operation.has_loads(),
+    stage_list = parameters.load_path.stages(parameters.operation.has_loads(),
                                              parameters.contact.unilateral);
-    const auto listed = [&](const Stage s) {
-      return std::find(stage_list.begin(), stage_list.end(), s)
-             != stage_list.end();
-    };
     out << "coaxfit: " << parameters.case_name << ", elastic-plastic ("
         << (parameters.shaft.plastic ? "shaft" : "")
         << (parameters.shaft.plastic && parameters.hub.plastic ? " and " : "")
@@ -133,74 +127,145 @@ namespace coaxfit
       = std::make_unique<ResultDirectory>(parameters.output_directory(), files);
 
     setup_system();
+    if (stays_elastic())
+      {
+        // The elastic code writes its own directory.
+        directory.reset();
+        return run_elastic("");
+      }
+    print_path();
+    solve();
+    postprocess();
+    output_results(directory->staging_path());
+    directory->commit(out);
+    out << "  results in " << parameters.output_directory() << '\n';
+    if (!completed)
+      report_failure();
+    return completed ? 0 : 2;
+  }
+
+
+
+  int
+  PlasticFit::run_in(const std::string &directory)
+  {
+    // The selection that called it writes report.md.
+    checks_a_selection = true;
+    check_scope();
+    stage_list = parameters.load_path.stages(parameters.operation.has_loads(),
+                                             parameters.contact.unilateral);
+    setup_system();
+    if (stays_elastic())
+      return run_elastic(directory);
+    print_path();
+    solve();
+    postprocess();
+    output_results(directory);
+    if (!completed)
+      report_failure();
+    return completed ? 0 : 2;
+  }
+
+
+
+  bool
+  PlasticFit::compute()
+  {
+    check_scope();
+    stage_list = parameters.load_path.stages(parameters.operation.has_loads(),
+                                             parameters.contact.unilateral);
+    setup_system();
+    elastic_limit_fraction();
+    return solve();
+  }
+
+
+
+  bool
+  PlasticFit::stays_elastic()
+  {
+    using Stage       = LoadPathParameters::Stage;
+    const auto listed = [&](const Stage s) {
+      return std::find(stage_list.begin(), stage_list.end(), s)
+             != stage_list.end();
+    };
     // The state of operation first: the state of assembly is the one the
     // load path starts from.
     const double operation_ratio
       = listed(Stage::operation) ? operation_yield_ratio() : 0.;
     const double fraction = elastic_limit_fraction();
-    if (fraction >= 1. && operation_ratio < 1. && !listed(Stage::unloading)
-        && !listed(Stage::disassembly))
+    if (!(fraction >= 1. && operation_ratio < 1. && !listed(Stage::unloading)
+          && !listed(Stage::disassembly)))
+      return false;
+    // Nothing yields: the elastic code's answer is the answer.
+    if (fraction < 1e100 || operation_ratio > 0.)
       {
-        // Nothing yields: the elastic code's answer is the answer.
-        if (fraction < 1e100 || operation_ratio > 0.)
-          {
-            out << "  the fit stays elastic: its largest von Mises stress is "
-                << std::setprecision(4) << 100. / fraction
-                << " % of the yield strength";
-            if (listed(Stage::operation))
-              out << " after joining, " << 100. * operation_ratio
-                  << " % in operation";
-            out << "; the elastic results follow\n" << std::defaultfloat;
-          }
-        else
-          out << "  the fit stays elastic: no stress in the bodies that may "
-                 "yield; the elastic results follow\n";
-        directory.reset();
-        bodies.clear();
-        coupling.reset();
-        // The elastic code's run: nothing yields, so the bodies are elastic.
-        Parameters elastic        = parameters;
-        elastic.shaft.plastic     = false;
-        elastic.hub.plastic       = false;
-        const CaseFigures figures = run_case(elastic, out, verbose);
-        return figures.converged ? 0 : 2;
+        out << "  the fit stays elastic: its largest von Mises stress is "
+            << std::setprecision(4) << 100. / fraction
+            << " % of the yield strength";
+        if (listed(Stage::operation))
+          out << " after joining, " << 100. * operation_ratio
+              << " % in operation";
+        out << "; the elastic results follow\n" << std::defaultfloat;
       }
+    else
+      out << "  the fit stays elastic: no stress in the bodies that may "
+             "yield; the elastic results follow\n";
+    return true;
+  }
+
+
+
+  int
+  PlasticFit::run_elastic(const std::string &directory)
+  {
+    bodies.clear();
+    coupling.reset();
+    // The elastic code's run: nothing yields, so the bodies are elastic.
+    Parameters elastic        = parameters;
+    elastic.shaft.plastic     = false;
+    elastic.hub.plastic       = false;
+    const CaseFigures figures = run_case(elastic, out, verbose, directory);
+    return figures.converged ? 0 : 2;
+  }
+
+
+
+  void
+  PlasticFit::print_path() const
+  {
     if (!method_note.empty())
       out << "  " << method_note << '\n';
-    if (fraction < 1.)
-      out << "  first yield at " << std::setprecision(4) << 100. * fraction
-          << " % of the interference (U "
-          << 2. * parameters.geometry.d * fraction << " mm); ";
+    if (elastic_fraction < 1.)
+      out << "  first yield at " << std::setprecision(4)
+          << 100. * elastic_fraction << " % of the interference (U "
+          << 2. * parameters.geometry.d * elastic_fraction << " mm); ";
     else
       out << "  joining stays elastic (" << std::setprecision(4)
-          << 100. / fraction << " % of the yield strength); ";
+          << 100. / elastic_fraction << " % of the yield strength); ";
     out << "stages";
-    for (const Stage s : stage_list)
+    for (const LoadPathParameters::Stage s : stage_list)
       out << (s == stage_list.front() ? " " : ", ") << to_string(s);
     out << ", " << parameters.load_path.increments << " increments each, "
         << (coupling->monolithic() ? "monolithic (Newton on the joint)" :
                                      "staggered (Dirichlet-Neumann, IQN-ILS)")
         << '\n'
         << std::defaultfloat;
-    solve();
-    postprocess();
-    output_results(directory->staging_path());
-    directory->commit(out);
-    out << "  results in " << parameters.output_directory() << '\n';
-    (void)start;
-    if (!completed)
-      {
-        const StageResult &last = stages.back();
-        std::cerr << "coaxfit: " << failure << "; the last converged state ("
-                  << to_string(last.kind) << " at " << std::setprecision(4)
-                  << 100. * last.fraction << " % of the interference, "
-                  << 100. * last.load_factor
-                  << " % of the loads of operation) is written, marked not "
-                     "converged"
-                  << std::endl;
-        return 2;
-      }
-    return 0;
+  }
+
+
+
+  void
+  PlasticFit::report_failure() const
+  {
+    const StageResult &last = stages.back();
+    std::cerr << "coaxfit: " << failure << "; the last converged state ("
+              << to_string(last.kind) << " at " << std::setprecision(4)
+              << 100. * last.fraction << " % of the interference, "
+              << 100. * last.load_factor
+              << " % of the loads of operation) is written, marked not "
+                 "converged"
+              << std::endl;
   }
 
 
@@ -283,7 +348,21 @@ namespace coaxfit
               << (least.slip_safety < 1. ? " (BELOW 1: the fit slips)" : "");
         out << '\n';
       }
-    if (parameters.output.write_report || parameters.output.write_plots)
+    if (parameters.design.plastic_utilisation > 0.)
+      {
+        // Check mode with an allowed utilisation: the hub's, largest over
+        // the stages (the zone never shrinks), against it.
+        const double used = largest_hub_utilisation();
+        out << "  plastic utilisation of the hub " << std::setprecision(1)
+            << 100. * used << " % against the allowed "
+            << 100. * parameters.design.plastic_utilisation << " %"
+            << (used > parameters.design.plastic_utilisation ?
+                  ": BEYOND the allowed (Design/Plastic utilisation)" :
+                  ": within")
+            << std::setprecision(2) << '\n';
+      }
+    if ((parameters.output.write_report || parameters.output.write_plots)
+        && !checks_a_selection)
       out << "  (report.md and the plots are written by the elastic code; "
              "an elastic-plastic run writes summary.json, the CSV and VTU "
              "files)\n";
@@ -468,6 +547,13 @@ namespace coaxfit
             parameters.design.required_torque > 0. ? Json(least.slip_safety) :
                                                      Json(nullptr)}};
     }
+    if (parameters.design.plastic_utilisation > 0.)
+      design["plastic_utilisation"]
+        = {{"hub", largest_hub_utilisation()},
+           {"allowed", parameters.design.plastic_utilisation},
+           {"within",
+            largest_hub_utilisation()
+              <= parameters.design.plastic_utilisation}};
     j["design"]            = design;
     j["mesh"]              = {{"cells",
                                {{"shaft", scene.bodies[0].discretization->n_cells()},

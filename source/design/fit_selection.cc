@@ -54,7 +54,10 @@ namespace coaxfit
           if (parameters.hub.tensile_strength > 0.)
             list.push_back(Criterion::fracture_hub);
         }
-      else if (parameters.hub.yield_strength > 0.)
+      else if (parameters.hub.yield_strength > 0.
+               && !(parameters.design.plastic_utilisation > 0.))
+        // A hub allowed to yield answers to its plastic utilisation
+        // instead (compute_plastic()).
         list.push_back(Criterion::yield_hub);
       if (parameters.shaft.yield_strength > 0.)
         list.push_back(Criterion::yield_shaft);
@@ -201,10 +204,13 @@ namespace coaxfit
 
 
 
-  FitSelection::FitSelection(const Parameters &parameters, const Solve &solve)
+  FitSelection::FitSelection(const Parameters   &parameters,
+                             const Solve        &solve,
+                             const PlasticSolve &plastic)
     : diameter(parameters.drawing.joint_diameter)
     , design(parameters.design)
     , brittle_hub(parameters.hub.kind == MaterialKind::brittle)
+    , allowed_utilisation(parameters.design.plastic_utilisation)
   {
     // The largest interference the model takes: U_w = 0.1 D_F, on a cone
     // also a = l_F / 10 (complete_taper() requires the same of a run).
@@ -226,7 +232,15 @@ namespace coaxfit
         + ", case " + to_string(parameters.fit.fit_case)
         + "): the selection chooses the fit");
     compute_din(parameters);
+    if (allowed_utilisation > 0.)
+      compute_din_plastic(parameters);
     compute_fe(parameters, solve);
+    if (allowed_utilisation > 0.)
+      {
+        if (!plastic)
+          throw std::logic_error("a plastic selection needs its solve");
+        compute_plastic(parameters, plastic);
+      }
     compute_joining(parameters);
     rank_fits();
     note_fits();
@@ -404,6 +418,10 @@ namespace coaxfit
           U_a = std::min(U_a, 0.5 * U_limit);
         U_b = smoothing + 1.5 * (U_a - smoothing);
       }
+    // The lines' slopes are judged from U_a to U_b: in order (DIN 7190's
+    // U_min lies above its U_max where no interference suits).
+    if (U_b < U_a)
+      std::swap(U_a, U_b);
 
     // Every solve is kept: (state, U) -> its state.
     std::map<std::pair<unsigned int, double>, SolvedState> solved;
@@ -749,6 +767,9 @@ namespace coaxfit
         << ", yield safety " << design.yield_safety;
       if (brittle)
         s << ", fracture safety " << design.fracture_safety;
+      if (design.plastic_utilisation > 0.)
+        s << " (the shaft's), plastic utilisation of the hub "
+          << design.plastic_utilisation;
       return s.str();
     }
   } // namespace
@@ -866,6 +887,19 @@ namespace coaxfit
               ", fracture hub " + safety_text(c.safety_fracture_hub))
         << ", open " << std::setprecision(4) << c.separated_length << " mm"
         << (c.contact_lost ? " (contact lost)" : "") << '\n';
+    if (!plastic_checks.empty())
+      s << "    elastic-plastic load paths followed: " << n_plastic_solves
+        << " (the rows above are elastic: where the hub yields they "
+           "overstate its pressure; these hold)\n";
+    for (const PlasticCheck &c : plastic_checks)
+      s << "    " << c.end << ", elastic-plastic: U " << mm(c.U)
+        << " mm, hub utilisation " << safety_text(c.state.utilisation)
+        << " (D_p " << safety_text(c.state.plastic_diameter) << " mm), slip "
+        << safety_text(c.safety_slip) << " "
+        << (c.state.least_stage == "joining" ? "after joining" :
+                                               "in " + c.state.least_stage)
+        << ", joined mean p " << safety_text(c.state.joined_pressure) << " MPa"
+        << (c.state.completed ? "" : " (load path not completed)") << '\n';
     for (const std::string &n : notes)
       s << "    note: " << n << '\n';
     if (taper_fit() && found())
@@ -924,6 +958,22 @@ namespace coaxfit
               << safety_text(c.safety_yield_hub) << " | "
               << safety_text(c.safety_yield_shaft) << " | "
               << mm(c.separated_length) << " |\n";
+        out << '\n';
+      }
+    if (!plastic_checks.empty())
+      {
+        out << "The rows above are elastic: where the hub yields they "
+               "overstate its pressure. On the elastic-plastic load path ("
+            << n_plastic_solves
+            << " followed):\n\n| end | U (mm) | hub utilisation | D_p (mm) "
+               "| slip | least in | joined mean p (MPa) |\n|---|---:|---:|"
+               "---:|---:|---|---:|\n";
+        for (const PlasticCheck &c : plastic_checks)
+          out << "| " << c.end << " | " << mm(c.U) << " | "
+              << safety_text(c.state.utilisation) << " | "
+              << safety_text(c.state.plastic_diameter) << " | "
+              << safety_text(c.safety_slip) << " | " << c.state.least_stage
+              << " | " << safety_text(c.state.joined_pressure) << " |\n";
         out << '\n';
       }
     for (const std::string &n : notes)

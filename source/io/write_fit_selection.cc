@@ -144,6 +144,26 @@ namespace coaxfit
              {"a_min_din", length(selection.push_on(selection.least_din.U))},
              {"a_max_din", length(selection.push_on(selection.largest_din.U))},
              {"units", "mm, push-on distance a = U / taper"}};
+      if (selection.allowed_utilisation > 0.)
+        {
+          // The ends on the elastic-plastic load path (the hub may yield).
+          Json plastic = Json::array();
+          for (const FitSelection::PlasticCheck &c : selection.plastic_checks)
+            plastic.push_back(
+              {{"end", c.end},
+               {"U", c.U},
+               {"hub_utilisation", c.state.utilisation},
+               {"hub_plastic_diameter", c.state.plastic_diameter},
+               {"utilisation_stage", c.state.utilisation_stage},
+               {"safety_slip", safety(c.safety_slip)},
+               {"least_normal_force_stage", c.state.least_stage},
+               {"joined_mean_pressure", c.state.joined_pressure},
+               {"completed", c.state.completed}});
+          j["selection"]["plastic"]
+            = {{"allowed_utilisation", selection.allowed_utilisation},
+               {"load_paths", selection.n_plastic_solves},
+               {"checks", plastic}};
+        }
       j["verdict"] = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
       const std::string name = directory + "/summary.json";
       std::ofstream     out  = open_result_file(name);

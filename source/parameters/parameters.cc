@@ -1201,6 +1201,12 @@ namespace coaxfit
       }
     coupling.validate();
     contact.validate();
+    if (design.plastic_utilisation > 0. && !hub.plastic)
+      throw InputError("parameter Design/Plastic utilisation = "
+                       + number(design.plastic_utilisation)
+                       + ": a utilisation above 0 lets the hub yield and "
+                         "needs Material/Hub/Plasticity = von Mises (with "
+                         "its Yield strength); allowed without it is 0");
     if (shaft.plastic || hub.plastic)
       load_path.stages(operation.has_loads(), contact.unilateral);
     else if (Utilities::trim(load_path.stages_text) != "auto")

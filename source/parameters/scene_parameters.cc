@@ -342,6 +342,24 @@ namespace coaxfit
                       "hub (Material/Hub/Kind) must have, for the verdict. "
                       "Allowed: 1 to 100.",
                       Patterns::Double(1., 100.));
+    prm.add_parameter(
+      "Plastic utilisation",
+      plastic_utilisation,
+      "The plastic utilisation of the hub that Mode = select allows at "
+      "U_max: (D_p - D_F) / (D_aA - D_F) at the mid-plane, D_p the "
+      "diameter of the hub's plastic zone (0: elastic, 1: plastic through "
+      "the wall). 0: the selection stays elastic (U_max from Yield "
+      "safety, the hub must not yield). Above 0, with Material/Hub/"
+      "Plasticity = von Mises: the hub may yield; U_max is the "
+      "interference whose elastic-plastic load path (joining, and "
+      "operation when Operation has loads) reaches this utilisation, and "
+      "where the hub yields at U_min its pressure comes from that path "
+      "too (a yielding hub carries less than the elastic formulas say). "
+      "Yield safety then applies to the shaft only. In check mode an "
+      "elastic-plastic run reports its hub's utilisation against it. "
+      "Allowed: 0 to 0.9 (near 1 the pressure no longer grows with the "
+      "interference and the hub's elastic ring is all that holds it).",
+      Patterns::Double(0., 0.9));
     prm.add_parameter("Edge distance",
                       edge_distance,
                       "Distance in mm from the hub's edge (where the "

@@ -1,6 +1,8 @@
 #ifndef coaxfit_fit_selection_study_h
 #define coaxfit_fit_selection_study_h
 
+#include <coaxfit/design/fit_selection.h>
+#include <coaxfit/design/verdict.h>
 #include <coaxfit/parameters/parameters.h>
 
 #include <ostream>
@@ -79,7 +81,39 @@ namespace coaxfit
     static Parameters
     checking_push_on(const Parameters &parameters, double U_min, double U_max);
 
+    /**
+     * The load path of @p parameters (a hub that may yield) followed by
+     * PlasticFit without output: the figures a selection takes.
+     */
+    static FitSelection::PlasticState
+    follow_load_path(const Parameters &parameters);
+
   private:
+    /**
+     * With a hub that may yield: the first fit @p fit checked on the load
+     * paths of its least and largest interference (elastic-plastic runs
+     * into the subdirectories min and max of @p directory), the verdict
+     * from them (the hub's plastic utilisation at max, the slip safety at
+     * min), report.md with the selection's @p section; whether both runs
+     * were completed.
+     */
+    bool
+    check_plastic(const FitSelection &selection,
+                  const std::string  &fit,
+                  const std::string  &directory,
+                  const std::string  &section,
+                  Verdict            &verdict);
+
+    /**
+     * report.md into @p directory (with Output/Write report): the title
+     * (with @p title after the diameter), the verdict, then @p body.
+     */
+    void
+    write_report(const std::string &directory,
+                 const std::string &title,
+                 const Verdict     &verdict,
+                 const std::string &body) const;
+
     const Parameters    parameters;
     std::ostream       &out;
     const bool          verbose;

@@ -7,6 +7,7 @@
 #include <coaxfit/parameters/parameters.h>
 #include <coaxfit/solvers/plastic_body.h>
 
+#include <algorithm>
 #include <memory>
 #include <ostream>
 #include <set>
@@ -46,6 +47,41 @@ namespace coaxfit
      */
     int
     run();
+
+    /**
+     * What run() does into the existing directory @p directory (no
+     * staging, no commit): the check of a fit a selection chose. The exit
+     * code as run()'s.
+     */
+    int
+    run_in(const std::string &directory);
+
+    /**
+     * For a fit selection: set up and follow the stages (joining, and
+     * operation as Load path/Stages gives it) without output; whether all
+     * were completed. The states: stage_results(); a fit that stays
+     * elastic is followed by the plastic code all the same (its joining
+     * is the one elastic solve).
+     */
+    bool
+    compute();
+
+    /**
+     * The fraction of the interference at which the first point yields
+     * (after setup_system(); > 1: joining stays elastic).
+     */
+    double
+    elastic_limit() const
+    {
+      return elastic_fraction;
+    }
+
+    /** Why the load path stopped (empty if it was completed). */
+    const std::string &
+    failure_text() const
+    {
+      return failure;
+    }
 
     /** Meshes, DoFs, the plastic bodies and the coupling. */
     void
@@ -127,6 +163,7 @@ namespace coaxfit
       unsigned int separated_points = 0;
       std::vector<BodyFigures> figures;
       double torque_capacity = 0., slip_safety = 0.; ///< N m, -
+      double normal_force = 0.;                      ///< N, p_mean pi D_F l_F
       /**
        * The change of the hub's bore diameter and of the shaft's outer
        * diameter at the mid-plane of the joint (mm): after disassembly the
@@ -137,7 +174,34 @@ namespace coaxfit
       std::string vtu[2];      ///< the shaft's and the hub's VTU
     };
 
+    /** The state at the end of each stage reached (after solve()). */
+    const std::vector<StageResult> &
+    stage_results() const
+    {
+      return stages;
+    }
+
   private:
+    /**
+     * After setup_system(): whether nothing yields along joining and
+     * operation and no unloading or disassembly is asked (the elastic
+     * code's answer is the answer; a line says so).
+     */
+    bool
+    stays_elastic();
+
+    /** The line on the path about to be followed. */
+    void
+    print_path() const;
+
+    /** The line on a path that stopped (to the error stream). */
+    void
+    report_failure() const;
+
+    /** The elastic code's run of this fit into @p directory ("": its own). */
+    int
+    run_elastic(const std::string &directory);
+
     /** Refuse what this version does not compute (before any work). */
     void
     check_scope() const;
@@ -167,6 +231,16 @@ namespace coaxfit
      */
     const StageResult &
     least_torque_stage() const;
+
+    /** The hub's plastic utilisation, the largest of the stages reached. */
+    double
+    largest_hub_utilisation() const
+    {
+      double used = 0.;
+      for (const StageResult &stage : stages)
+        used = std::max(used, stage.figures[1].utilisation);
+      return used;
+    }
 
     /** Keep the committed state's figures and files in @p stage. */
     void
@@ -199,10 +273,11 @@ namespace coaxfit
     double                                 elastic_fraction = 0.;
     double                                 reached          = 0.;
     bool                                   completed        = false;
-    std::string                            failure;
-    std::vector<Increment>                 increments;
-    std::vector<StageResult>               stages; ///< those reached
-    unsigned int                           total_steps = 0, body_solves = 0;
+    bool        checks_a_selection = false; ///< run_in(): a selection's case
+    std::string failure;
+    std::vector<Increment>   increments;
+    std::vector<StageResult> stages; ///< those reached
+    unsigned int             total_steps = 0, body_solves = 0;
     unsigned int total_halvings = 0; ///< failed increments, all stages
     unsigned int elastic_steps  = 0; ///< of the elastic solve of joining
 

@@ -60,6 +60,14 @@ namespace coaxfit
    * U_max_din]: the finite elements may accept a fit the plain-cylinder
    * formulas do not.
    *
+   * A hub that may yield (Material/Hub/Plasticity = von Mises) with
+   * Design/Plastic utilisation P > 0: the hub's yield is no criterion;
+   * U_max is where its plastic utilisation (D_p - D_F) / (D_aA - D_F) on
+   * the elastic-plastic load path reaches P, and where the hub yields at
+   * U_min the slip safety comes from that path (a yielding hub carries
+   * less pressure than the elastic model gives). DIN 7190's column takes
+   * the thick-walled cylinder of elastic_plastic_hub_pressure() for both.
+   *
    * A taper fit (sections that meet on a cone, taper C) has no ISO fit: its
    * interference is U = a C of the push-on distance a. The band found the
    * same way is one of push-on distances [a_min, a_max] = [U_min, U_max] /
@@ -109,10 +117,46 @@ namespace coaxfit
     };
 
     /**
-     * Select for the run of @p parameters (Design/Mode = select); @p solve
-     * solves a state of the same scene at another interference or loads.
+     * The elastic-plastic state of a fit along its load path (joining, and
+     * operation when Operation has loads), as a selection with
+     * Design/Plastic utilisation > 0 takes it.
      */
-    FitSelection(const Parameters &parameters, const Solve &solve);
+    struct PlasticState
+    {
+      bool        completed = false;       ///< every stage was solved
+      std::string failure;                 ///< why not
+      double      elastic_fraction = 0.;   ///< of U_w at the first yield
+      double      utilisation      = 0.;   ///< the hub's, largest of the stages
+      double      plastic_diameter = 0.;   ///< the hub's D_p there (mm)
+      std::string utilisation_stage;       ///< the stage that reached it
+      double      least_normal_force = 0.; ///< N, the least of the stages
+      std::string least_stage;             ///< the stage of least force
+      double      joined_pressure = 0.;    ///< mean, after joining (MPa)
+    };
+
+    /** Follows the load path of a Parameters (same scene). */
+    using PlasticSolve = std::function<PlasticState(const Parameters &)>;
+
+    /** An end of the band on the elastic-plastic load path. */
+    struct PlasticCheck
+    {
+      std::string  end; ///< "U_min" or "U_max"
+      double       U = 0.;
+      PlasticState state;
+      double       safety_slip = 0.; ///< of the least normal force
+    };
+
+    /**
+     * Select for the run of @p parameters (Design/Mode = select); @p solve
+     * solves a state of the same scene at another interference or loads,
+     * elastically. With Design/Plastic utilisation > 0 (a hub that may
+     * yield) @p plastic follows the load path of an interference: the
+     * hub's criterion is then its plastic utilisation on that path
+     * (compute_plastic()), no longer its elastic yield.
+     */
+    FitSelection(const Parameters   &parameters,
+                 const Solve        &solve,
+                 const PlasticSolve &plastic = PlasticSolve());
 
     End                      least, largest;         ///< FE: U_min, U_max
     End                      least_din, largest_din; ///< DIN 7190
@@ -124,8 +168,16 @@ namespace coaxfit
     double                   diameter = 0.; ///< D_F (mm)
     DesignParameters         design;        ///< the loads and safeties
     bool                     brittle_hub = false; ///< fracture, not yield
-    double taper   = 0.; ///< C of a taper fit; 0: a cylindrical joint
+    double taper = 0.; ///< C of a taper fit; 0: a cylindrical joint
+    /** Design/Plastic utilisation; 0: the selection is elastic. */
+    double                    allowed_utilisation = 0.;
+    std::vector<PlasticCheck> plastic_checks;       ///< each end
+    unsigned int              n_plastic_solves = 0; ///< load paths followed
     double U_limit = 0.; ///< the largest interference the model takes (mm)
+
+    /** The safety against slip of the normal force @p N (N). */
+    double
+    slip_safety_of(double N) const;
 
     /** Whether the joint is a cone: a band of push-on distances. */
     bool
@@ -216,6 +268,24 @@ namespace coaxfit
 
     void
     compute_fe(const Parameters &parameters, const Solve &solve);
+
+    /**
+     * With a hub that may yield: U_max where the hub's plastic utilisation
+     * on the load path reaches the allowed one, and U_min again from the
+     * load path where the hub yields at the elastic U_min (each found by
+     * secant steps in a bracket, the load path followed at each
+     * interference from the unloaded state).
+     */
+    void
+    compute_plastic(const Parameters &parameters, const PlasticSolve &solve);
+
+    /**
+     * DIN 7190's ends for a hub that may yield (the thick-walled cylinder
+     * of elastic_plastic_hub_pressure(), at assembly).
+     */
+    void
+    compute_din_plastic(const Parameters &parameters);
+
 
     void
     compute_joining(const Parameters &parameters);

@@ -144,11 +144,16 @@ namespace coaxfit
     double press_in_friction_coefficient = 0.08;
     double required_torque               = 0.; ///< N m; 0: none
     double required_axial_force          = 0.; ///< N; 0: none
-    double slip_safety     = 1.;   ///< required against slip (verdict)
-    double yield_safety    = 1.;   ///< required against yield (verdict)
-    double fracture_safety = 2.;   ///< required of a brittle hub (verdict)
-    double edge_distance   = 0.;   ///< mm; 0: 5 % of l_F
-    bool   corner_trend    = true; ///< solve once more, one level coarser
+    double slip_safety     = 1.; ///< required against slip (verdict)
+    double yield_safety    = 1.; ///< required against yield (verdict)
+    double fracture_safety = 2.; ///< required of a brittle hub (verdict)
+    /**
+     * The hub's plastic utilisation (D_p - D_F) / (D_aA - D_F) a selection
+     * allows at U_max (a hub with Plasticity = von Mises); 0: elastic.
+     */
+    double plastic_utilisation = 0.;
+    double edge_distance       = 0.;   ///< mm; 0: 5 % of l_F
+    bool   corner_trend        = true; ///< solve once more, one level coarser
 
     void
     declare_parameters(ParameterHandler &prm);

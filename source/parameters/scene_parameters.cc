@@ -252,7 +252,9 @@ namespace coaxfit
                       "A taper fit (sections meeting on a cone) has no ISO "
                       "fit: select gives its band of push-on distances "
                       "(a = U / C) and computes its ends and middle as the "
-                      "cases min, mean, max.");
+                      "cases min, mean, max. A hub with Plasticity = von "
+                      "Mises is held elastic by the selection unless "
+                      "Plastic utilisation > 0 lets it yield.");
     prm.add_action("Mode", [this](const std::string &value) {
       mode = value == "select" ? DesignMode::select : DesignMode::check;
     });

@@ -19,6 +19,8 @@
 //   utilisation at the fit's largest interference not above 0.5;
 // - Plastic utilisation = 0 with a plastic hub: the elastic selection,
 //   the same band as with Plasticity = none (to 1e-12);
+// - check mode beyond the allowed utilisation: the slip safety with K_A
+//   and the axial force against the hand formula, the verdict failed;
 // - bad input: a utilisation without a plastic hub, a utilisation beyond
 //   0.9 (exit 1, one line naming the entry).
 
@@ -125,8 +127,12 @@ main()
 
   std::cout << "Plastic utilisation 0 with the plastic hub, against "
                "Plasticity = none:\n";
-  run_example("elastic_selection", disc);
-  run_example("no_plasticity", disc + "--set 'Material/Hub/Plasticity=none'");
+  run_example("elastic_selection",
+              disc + "--set 'Design/Plastic utilisation=0'");
+  run_example("no_plasticity",
+              disc
+                + "--set 'Design/Plastic utilisation=0' "
+                  "--set 'Material/Hub/Plasticity=none'");
   const nlohmann::json a = read_summary("elastic_selection")["selection"];
   const nlohmann::json b = read_summary("no_plasticity")["selection"];
   std::cout
@@ -140,6 +146,32 @@ main()
           "yes" :
           "NO")
     << '\n';
+
+  std::cout << "check mode, U 0.2 mm, 400 N m and 20000 N times K_A 1.25:\n";
+  run_example("check",
+              disc
+                + "--set 'Design/Mode=check' "
+                  "--set 'Fit/Diametral interference=0.2' "
+                  "--set 'Design/Required axial force=20000' "
+                  "--set 'Design/Application factor=1.25'");
+  {
+    // The slip safety by hand from the mean pressure: mu p pi D_F l_F over
+    // K_A times the resultant of the required loads.
+    const nlohmann::json c       = read_summary("check");
+    const double         mean    = c["pressure"]["mean"];
+    const double         by_hand = 0.15 * mean * M_PI * 50. * 5.
+                           / (1.25 * std::hypot(400. * 2000. / 50., 20000.));
+    std::cout << "  slip safety " << std::setprecision(4)
+              << c["design"]["safety_slip"].get<double>() << ", by hand "
+              << by_hand << ": "
+              << agreement(c["design"]["safety_slip"], by_hand, 1e-9) << '\n'
+              << "  hub utilisation "
+              << c["design"]["plastic_utilisation"]["hub"].get<double>()
+              << ", verdict ok " << c["verdict"]["ok"].get<bool>() << ": ";
+    for (const auto &f : c["verdict"]["failed"])
+      std::cout << f.get<std::string>() << "; ";
+    std::cout << '\n';
+  }
 
   std::cout << "bad input:\n";
   run_example("bad",

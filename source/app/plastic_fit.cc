@@ -529,10 +529,10 @@ namespace coaxfit
     stage.normal_force    = stage.p_mean * M_PI * DF * length;
     stage.torque_capacity = parameters.design.friction_coefficient
                             * stage.normal_force * DF / 2. / 1000.;
-    stage.slip_safety
-      = parameters.design.required_torque > 0. ?
-          stage.torque_capacity / parameters.design.required_torque :
-          0.;
+    // With K_A and the required axial force, as the elastic code (0
+    // without a required load).
+    const double safety = slip_safety(stage);
+    stage.slip_safety   = std::isnan(safety) ? 0. : safety;
 
     const Vector<double> u1
       = shaft.interface_radial_values(bodies[0]->solution());

@@ -343,7 +343,7 @@ namespace coaxfit
       {
         out << "  least torque capacity " << least.torque_capacity
             << " N m, after " << to_string(least.kind);
-        if (least.slip_safety > 0. || parameters.design.required_torque > 0.)
+        if (least.slip_safety > 0.)
           out << ", safety against slip " << least.slip_safety
               << (least.slip_safety < 1. ? " (BELOW 1: the fit slips)" : "");
         out << '\n';
@@ -361,11 +361,18 @@ namespace coaxfit
                   ": within")
             << std::setprecision(2) << '\n';
       }
-    if ((parameters.output.write_report || parameters.output.write_plots)
-        && !checks_a_selection)
-      out << "  (report.md and the plots are written by the elastic code; "
-             "an elastic-plastic run writes summary.json, the CSV and VTU "
-             "files)\n";
+    const std::vector<std::string> failed = verdict_failures();
+    out << "Verdict: " << (failed.empty() ? "OK" : "FAILED");
+    for (const std::string &f : failed)
+      out << (&f == &failed.front() ? ": " : "; ") << f;
+    out << '\n';
+    if (parameters.output.write_report)
+      write_report(directory, failed);
+    if (parameters.output.write_plots && !checks_a_selection)
+      out
+        << "  (the plots are written by the elastic code; "
+           "an elastic-plastic run writes summary.json, report.md, the CSV and VTU "
+           "files)\n";
     out << std::defaultfloat;
 
     // parameters.prm: repeats the run.
@@ -434,9 +441,11 @@ namespace coaxfit
                   {"z_of_max", stage.z_of_max}};
     };
     Json j;
+    j["case"]        = parameters.case_name;
     j["variant"]     = parameters.case_name;
     j["model"]       = "elastic-plastic";
     j["converged"]   = completed;
+    j["verdict"]     = {{"ok", failed.empty()}, {"failed", failed}};
     j["iterations"]  = total_steps;
     Json pressure    = pressure_json(joined);
     pressure["lame"] = elastic_lame;
@@ -544,8 +553,7 @@ namespace coaxfit
         = {{"stage", to_string(least.kind)},
            {"torque_capacity", least.torque_capacity},
            {"safety_slip",
-            parameters.design.required_torque > 0. ? Json(least.slip_safety) :
-                                                     Json(nullptr)}};
+            least.slip_safety > 0. ? Json(least.slip_safety) : Json(nullptr)}};
     }
     if (parameters.design.plastic_utilisation > 0.)
       design["plastic_utilisation"]

@@ -65,14 +65,15 @@ namespace coaxfit
              "plastic utilisation, allowed "
           << figure_text(selection.allowed_utilisation, 4)
           << "); each case's files in its directory.\n\n| case | U (mm) | "
-             "hub utilisation | D_p (mm) | slip | least in | joined mean p "
+             "hub utilisation | D_p (mm) | slip | least | joined mean p "
              "(MPa) |\n|---|---:|---:|---:|---:|---|---:|\n";
     verdict.failed.clear();
     for (const FitCase c : {FitCase::min, FitCase::max})
       {
-        Parameters p    = checked.for_fit_case(c);
-        p.fit.fit_case  = c;
-        const auto name = to_string(c);
+        Parameters p            = checked.for_fit_case(c);
+        p.fit.fit_case          = c;
+        p.load_path.stages_text = FitSelection::load_path_stages(p);
+        const auto name         = to_string(c);
         // The figures from the load path, the files from the case's run.
         const FitSelection::PlasticState state = follow_load_path(p);
         const double slip = selection.slip_safety_of(state.least_normal_force);
@@ -85,7 +86,8 @@ namespace coaxfit
         table << "| " << name << " | " << figure_text(U, 5) << " | "
               << figure_text(state.utilisation, 4) << " | "
               << figure_text(state.plastic_diameter, 5) << " | "
-              << figure_text(slip, 4) << " | " << state.least_stage << " | "
+              << figure_text(slip, 4) << " | "
+              << FitSelection::stage_words(state.least_stage) << " | "
               << figure_text(state.joined_pressure, 5) << " |\n";
         if (!state.completed)
           verdict.failed.push_back(name
@@ -95,8 +97,8 @@ namespace coaxfit
         if (c == FitCase::min && slip < parameters.design.slip_safety)
           verdict.failed.push_back(
             name + ": safety against slip " + figure_text(slip, 4) + " < "
-            + figure_text(parameters.design.slip_safety, 4) + " ("
-            + state.least_stage + ")");
+            + figure_text(parameters.design.slip_safety, 4) + " "
+            + FitSelection::stage_words(state.least_stage));
         // The selection aims at most at the allowed utilisation; a fit
         // inside its band stays below it up to the load path's error.
         if (c == FitCase::max

@@ -889,15 +889,12 @@ namespace coaxfit
         << (c.contact_lost ? " (contact lost)" : "") << '\n';
     if (!plastic_checks.empty())
       s << "    elastic-plastic load paths followed: " << n_plastic_solves
-        << " (the rows above are elastic: where the hub yields they "
-           "overstate its pressure; these hold)\n";
+        << "; the band's ends on their load paths:\n";
     for (const PlasticCheck &c : plastic_checks)
       s << "    " << c.end << ", elastic-plastic: U " << mm(c.U)
         << " mm, hub utilisation " << safety_text(c.state.utilisation)
         << " (D_p " << safety_text(c.state.plastic_diameter) << " mm), slip "
-        << safety_text(c.safety_slip) << " "
-        << (c.state.least_stage == "joining" ? "after joining" :
-                                               "in " + c.state.least_stage)
+        << safety_text(c.safety_slip) << " " << stage_words(c.state.least_stage)
         << ", joined mean p " << safety_text(c.state.joined_pressure) << " MPa"
         << (c.state.completed ? "" : " (load path not completed)") << '\n';
     for (const std::string &n : notes)
@@ -962,18 +959,19 @@ namespace coaxfit
       }
     if (!plastic_checks.empty())
       {
-        out << "The rows above are elastic: where the hub yields they "
-               "overstate its pressure. On the elastic-plastic load path ("
-            << n_plastic_solves
-            << " followed):\n\n| end | U (mm) | hub utilisation | D_p (mm) "
-               "| slip | least in | joined mean p (MPa) |\n|---|---:|---:|"
-               "---:|---:|---|---:|\n";
+        out
+          << "The band's ends on their elastic-plastic load paths ("
+          << n_plastic_solves
+          << " load paths followed in all):\n\n| end | U (mm) | hub utilisation | D_p (mm) "
+             "| slip | least | joined mean p (MPa) |\n|---|---:|---:|"
+             "---:|---:|---|---:|\n";
         for (const PlasticCheck &c : plastic_checks)
           out << "| " << c.end << " | " << mm(c.U) << " | "
               << safety_text(c.state.utilisation) << " | "
               << safety_text(c.state.plastic_diameter) << " | "
-              << safety_text(c.safety_slip) << " | " << c.state.least_stage
-              << " | " << safety_text(c.state.joined_pressure) << " |\n";
+              << safety_text(c.safety_slip) << " | "
+              << stage_words(c.state.least_stage) << " | "
+              << safety_text(c.state.joined_pressure) << " |\n";
         out << '\n';
       }
     for (const std::string &n : notes)

@@ -40,12 +40,6 @@ namespace coaxfit
       return DF * (hub + shaft);
     }
 
-    /** The stage of a load path in words. */
-    std::string
-    stage_words(const std::string &stage)
-    {
-      return stage == "joining" ? "after joining" : "in " + stage;
-    }
   } // namespace
 
 
@@ -69,6 +63,11 @@ namespace coaxfit
     const double DF        = parameters.drawing.joint_diameter;
     const double DaA       = parameters.drawing.hub_outer_diameter;
     const double Re        = parameters.hub.yield_strength;
+    if (parameters.operation.has_loads())
+      notes.push_back("DIN 7190's U_max and U_min of the yielding hub are "
+                      "those at assembly (the thick-walled cylinder takes no "
+                      "loads of operation); the FE ends follow the load path "
+                      "through operation and unloading");
     // U_max: the hub plastic to the allowed utilisation.
     const double D_p   = DF + allowed_utilisation * (DaA - DF);
     const double U_max = plastic_interference(parameters, D_p) + smoothing;
@@ -127,7 +126,7 @@ namespace coaxfit
           ++n_plastic_solves;
           Parameters p            = at_interference(parameters, U);
           p.design.mode           = DesignMode::check;
-          p.load_path.stages_text = "auto";
+          p.load_path.stages_text = load_path_stages(parameters);
           known                   = solved.emplace(U, solve(p)).first;
         }
       return known->second;

@@ -1201,12 +1201,15 @@ namespace coaxfit
       }
     coupling.validate();
     contact.validate();
-    if (design.plastic_utilisation > 0. && !hub.plastic)
+    // A selection that may let the hub yield needs a hub that can; in check
+    // mode an elastic hub leaves the entry unused (input_warnings()).
+    if (design.plastic_utilisation > 0. && !hub.plastic
+        && design.mode == DesignMode::select)
       throw InputError("parameter Design/Plastic utilisation = "
                        + number(design.plastic_utilisation)
-                       + ": a utilisation above 0 lets the hub yield and "
-                         "needs Material/Hub/Plasticity = von Mises (with "
-                         "its Yield strength); allowed without it is 0");
+                       + ": a selection that lets the hub yield needs "
+                         "Material/Hub/Plasticity = von Mises (with its "
+                         "Yield strength); allowed without it is 0");
     if (shaft.plastic || hub.plastic)
       load_path.stages(operation.has_loads(), contact.unilateral);
     else if (Utilities::trim(load_path.stages_text) != "auto")
@@ -1299,8 +1302,13 @@ namespace coaxfit
   Parameters::input_warnings() const
   {
     std::vector<std::string> list = read_notes;
-    const double             U_w  = 2. * geometry.d;
-    const double             D_F  = 2. * geometry.R1;
+    if (design.plastic_utilisation > 0. && !hub.plastic)
+      list.push_back("Design/Plastic utilisation = "
+                     + number(design.plastic_utilisation)
+                     + " is not used: the hub is elastic "
+                       "(Material/Hub/Plasticity = none)");
+    const double U_w = 2. * geometry.d;
+    const double D_F = 2. * geometry.R1;
     if (U_w > 3e-3 * D_F)
       list.push_back("the effective interference " + number(U_w) + " mm is "
                      + number(std::round(1e4 * U_w / D_F) / 100.)

@@ -358,7 +358,9 @@ namespace coaxfit
       "where the hub yields at U_min its pressure comes from that path "
       "too (a yielding hub carries less than the elastic formulas say). "
       "Yield safety then applies to the shaft only. In check mode an "
-      "elastic-plastic run reports its hub's utilisation against it. "
+      "elastic-plastic run reports its hub's utilisation against it "
+      "and its verdict fails a hub that yields beyond it (0: a hub that "
+      "yields at all). "
       "Allowed: 0 to 0.9 (near 1 the pressure no longer grows with the "
       "interference and the hub's elastic ring is all that holds it).",
       Patterns::Double(0., 0.9));

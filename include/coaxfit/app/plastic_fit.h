@@ -232,6 +232,29 @@ namespace coaxfit
     const StageResult &
     least_torque_stage() const;
 
+    /**
+     * The safety against slip of @p stage: its normal force with the
+     * coefficient of friction over K_A times the required loads (NaN
+     * without a required load).
+     */
+    double
+    slip_safety(const StageResult &stage) const;
+
+    /**
+     * What the fit fails, one line each (empty: Verdict OK): the load path
+     * not completed; the surfaces apart in a stage it is used in (not
+     * disassembly); the slip safety of the least normal force of those
+     * stages below Design/Slip safety; the hub's plastic utilisation above
+     * Design/Plastic utilisation; a shaft that yields.
+     */
+    std::vector<std::string>
+    verdict_failures() const;
+
+    /** report.md into @p directory, with the verdict's @p failed lines. */
+    void
+    write_report(const std::string              &directory,
+                 const std::vector<std::string> &failed) const;
+
     /** The hub's plastic utilisation, the largest of the stages reached. */
     double
     largest_hub_utilisation() const

@@ -134,6 +134,27 @@ namespace coaxfit
       double      joined_pressure = 0.;    ///< mean, after joining (MPa)
     };
 
+    /**
+     * Load path/Stages of the selection's load paths: joining, and with
+     * loads of operation also operation and unloading (the fit must hold
+     * after its first cycle in service too: a hub that yielded further in
+     * operation keeps less pressure when cooled or stopped).
+     */
+    static std::string
+    load_path_stages(const Parameters &parameters)
+    {
+      return parameters.operation.has_loads() ?
+               "joining, operation, unloading" :
+               "joining";
+    }
+
+    /** A stage of a load path as a state: "after joining", "in operation". */
+    static std::string
+    stage_words(const std::string &stage)
+    {
+      return stage == "operation" ? "in operation" : "after " + stage;
+    }
+
     /** Follows the load path of a Parameters (same scene). */
     using PlasticSolve = std::function<PlasticState(const Parameters &)>;
 

@@ -107,22 +107,22 @@ namespace coaxfit
     // meshes and factorizations.
     // The elastic states: the bodies as elastic (a selection that lets
     // the hub yield follows its load paths with PlasticFit).
-    Parameters elastic    = parameters;
-    elastic.shaft.plastic = false;
-    elastic.hub.plastic   = false;
+    const auto as_elastic = [](Parameters p) {
+      p.shaft.plastic = false;
+      p.hub.plastic   = false;
+      return p;
+    };
     std::ostringstream quiet;
-    CoaxialFit         fit(FitSelection::at_interference(at_assembly(elastic),
-                                                 elastic.fit_limits.used()),
+    CoaxialFit         fit(FitSelection::at_interference(at_assembly(
+                                                   as_elastic(parameters)),
+                                                 parameters.fit_limits.used()),
                    quiet,
                    false);
     fit.setup_system();
     const FitSelection selection(
       parameters,
       [&](const Parameters &p) {
-        Parameters e    = p;
-        e.shaft.plastic = false;
-        e.hub.plastic   = false;
-        fit.reuse_for(e);
+        fit.reuse_for(as_elastic(p));
         fit.solve(nullptr);
         return fit.solved_state();
       },

@@ -1,5 +1,7 @@
 #include <coaxfit/app/plastic_fit.h>
 #include <coaxfit/design/design_report.h>
+#include <coaxfit/design/fit_selection.h>
+#include <coaxfit/design/required_loads.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <cmath>
@@ -14,9 +16,7 @@ namespace coaxfit
     std::string
     state_words(const LoadPathParameters::Stage kind)
     {
-      return kind == LoadPathParameters::Stage::operation ?
-               "in operation" :
-               "after " + to_string(kind);
+      return FitSelection::stage_words(to_string(kind));
     }
 
     /** A figure in words (4 digits). */
@@ -32,14 +32,11 @@ namespace coaxfit
   double
   PlasticFit::slip_safety(const StageResult &stage) const
   {
-    const DesignParameters &design = parameters.design;
-    const double            required
-      = design.application_factor
-        * std::hypot(1e3 * design.required_torque / parameters.geometry.R1,
-                     design.required_axial_force);
-    return required > 0. ?
-             design.friction_coefficient * stage.normal_force / required :
-             std::nan("");
+    const double required
+      = required_friction_force(parameters.design, 2. * parameters.geometry.R1);
+    return required > 0. ? parameters.design.friction_coefficient
+                             * stage.normal_force / required :
+                           std::nan("");
   }
 
 

@@ -10,37 +10,51 @@
 
 namespace coaxfit
 {
+  namespace
+  {
+    /** The figures a selection takes from the load path @p fit followed. */
+    FitSelection::PlasticState
+    state_of(const PlasticFit &fit, const Parameters &parameters)
+    {
+      FitSelection::PlasticState state;
+      const auto                &stages = fit.stage_results();
+      state.completed        = !stages.empty() && stages.back().completed;
+      state.failure          = fit.failure_text();
+      state.elastic_fraction = fit.elastic_limit();
+      state.plastic_diameter = parameters.drawing.joint_diameter;
+      double least           = std::numeric_limits<double>::infinity();
+      for (const PlasticFit::StageResult &stage : stages)
+        {
+          // The zone never shrinks along the path: its largest is the last.
+          const PlasticFit::BodyFigures &hub = stage.figures[1];
+          if (hub.yields && hub.utilisation > state.utilisation)
+            {
+              state.utilisation       = hub.utilisation;
+              state.plastic_diameter  = hub.plastic_diameter_mid;
+              state.utilisation_stage = to_string(stage.kind);
+            }
+          if (stage.normal_force < least)
+            {
+              least             = stage.normal_force;
+              state.least_stage = to_string(stage.kind);
+            }
+        }
+      state.least_normal_force = std::isfinite(least) ? least : 0.;
+      if (!stages.empty())
+        state.joined_pressure = stages.front().p_mean;
+      return state;
+    }
+  } // namespace
+
+
+
   FitSelection::PlasticState
   FitSelectionStudy::follow_load_path(const Parameters &parameters)
   {
-    std::ostringstream         quiet;
-    PlasticFit                 fit(parameters, quiet, false);
-    FitSelection::PlasticState state;
-    state.completed        = fit.compute();
-    state.failure          = fit.failure_text();
-    state.elastic_fraction = fit.elastic_limit();
-    state.plastic_diameter = parameters.drawing.joint_diameter;
-    double least           = std::numeric_limits<double>::infinity();
-    for (const PlasticFit::StageResult &stage : fit.stage_results())
-      {
-        // The zone never shrinks along the path: its largest is the last.
-        const PlasticFit::BodyFigures &hub = stage.figures[1];
-        if (hub.yields && hub.utilisation > state.utilisation)
-          {
-            state.utilisation       = hub.utilisation;
-            state.plastic_diameter  = hub.plastic_diameter_mid;
-            state.utilisation_stage = to_string(stage.kind);
-          }
-        if (stage.normal_force < least)
-          {
-            least             = stage.normal_force;
-            state.least_stage = to_string(stage.kind);
-          }
-      }
-    state.least_normal_force = std::isfinite(least) ? least : 0.;
-    if (!fit.stage_results().empty())
-      state.joined_pressure = fit.stage_results().front().p_mean;
-    return state;
+    std::ostringstream quiet;
+    PlasticFit         fit(parameters, quiet, false);
+    fit.compute();
+    return state_of(fit, parameters);
   }
 
 
@@ -73,14 +87,17 @@ namespace coaxfit
         Parameters p            = checked.for_fit_case(c);
         p.fit.fit_case          = c;
         p.load_path.stages_text = FitSelection::load_path_stages(p);
-        const auto name         = to_string(c);
-        // The figures from the load path, the files from the case's run.
-        const FitSelection::PlasticState state = follow_load_path(p);
-        const double slip = selection.slip_safety_of(state.least_normal_force);
-        const std::string sub = directory + "/" + name;
+        const auto        name  = to_string(c);
+        const std::string sub   = directory + "/" + name;
         std::filesystem::create_directory(sub);
-        PlasticFit   run(p, out, verbose);
-        const int    code = run.run_in(sub);
+        PlasticFit run(p, out, verbose);
+        const int  code = run.run_in(sub);
+        // The figures from the case's own load path; a case that stays
+        // elastic runs the elastic code, whose path is then followed here.
+        const FitSelection::PlasticState state = run.stage_results().empty() ?
+                                                   follow_load_path(p) :
+                                                   state_of(run, p);
+        const double slip = selection.slip_safety_of(state.least_normal_force);
         const double U    = 2. * p.geometry.d + p.fit_limits.smoothing_loss;
         completed         = completed && code == 0 && state.completed;
         table << "| " << name << " | " << figure_text(U, 5) << " | "

@@ -1,4 +1,5 @@
 #include <coaxfit/design/fit_design.h>
+#include <coaxfit/design/required_loads.h>
 #include <coaxfit/fe/section_scene.h>
 
 #include <algorithm>
@@ -148,13 +149,11 @@ namespace coaxfit
           = 1e-3 * R_F * cone_circumferential_capacity(N_din, mu, taper);
       }
 
-    // DIN 7190's resultant of a torque and an axial force on the joint:
-    // the circumferential force 2 M / D_F and the axial force combined,
-    // both times the application factor K_A.
+    // DIN 7190's resultant of a torque and an axial force on the joint
+    // (required_friction_force()); a cone shares the circumferential force
+    // 2 M / D_F and the axial force with its push-off.
     const double circumferential = 2e3 * design.required_torque / (2. * R_F);
-    const double required
-      = design.application_factor
-        * std::hypot(circumferential, design.required_axial_force);
+    const double required        = required_friction_force(design, 2. * R_F);
     // On a cone the torque and the pull share the friction with the cone's
     // own push-off (the capacities above are each load alone).
     if (!(required > 0.))

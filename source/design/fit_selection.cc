@@ -2,6 +2,7 @@
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/fit_selection.h>
 #include <coaxfit/design/operation_analysis.h>
+#include <coaxfit/design/required_loads.h>
 #include <coaxfit/fe/section_scene.h>
 
 #include <algorithm>
@@ -144,12 +145,8 @@ namespace coaxfit
                   / model.R1,
                 design.application_factor * design.required_axial_force);
             }
-          const double required
-            = design.application_factor
-              * std::hypot(1e3 * design.required_torque / model.R1,
-                           design.required_axial_force);
           return din.axial_force(din.pressure(), design.friction_coefficient)
-                 / required;
+                 / required_friction_force(design, 2. * model.R1);
         }
       const auto ratio = [](const double strength, const double stress) {
         return stress > 0. ? strength / stress : FitSelection::infinite;

@@ -2,6 +2,7 @@
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/fit_selection.h>
 #include <coaxfit/design/radial_plastic_fit.h>
+#include <coaxfit/design/required_loads.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,11 +48,8 @@ namespace coaxfit
   double
   FitSelection::slip_safety_of(const double N) const
   {
-    const double required
-      = design.application_factor
-        * std::hypot(2e3 * design.required_torque / diameter,
-                     design.required_axial_force);
-    return design.friction_coefficient * N / required;
+    return design.friction_coefficient * N
+           / required_friction_force(design, diameter);
   }
 
 

@@ -6,7 +6,9 @@
 // the Gauss-Seidel run (1e-8); the issue's target (no more than twice the
 // steps of the two-body sub-problems); the files of the run; the run
 // repeated from its parameters.prm; a sleeve with clearance in the hub
-// (contact lost, exit 0); bad input (exit 1, one line naming the entry).
+// (contact lost, exit 0); the verdict's criteria (yield, slip, fracture of a
+// brittle body) against hand figures from the closed form; bad input (exit
+// 1, one line naming the entry).
 
 #include <coaxfit/design/compound_cylinders.h>
 
@@ -45,6 +47,24 @@ namespace
       return nlohmann::json();
     std::cout << '\n';
     return read_summary(dir);
+  }
+
+  /** The example's parameter file as text. */
+  std::string
+  example_text()
+  {
+    std::ifstream in(example);
+    return std::string((std::istreambuf_iterator<char>(in)),
+                       std::istreambuf_iterator<char>());
+  }
+
+  /** Every @p from in @p text replaced by @p to. */
+  void
+  replace_all(std::string &text, const std::string &from, const std::string &to)
+  {
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at             = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
   }
 
   /** The largest relative difference of the joints' pressures. */
@@ -105,7 +125,13 @@ main()
                                  "sleeve.vtu",
                                  "hub.vtu",
                                  "contact_pressure_Shaft-Sleeve.csv",
-                                 "contact_pressure_Sleeve-Hub.csv"})
+                                 "contact_pressure_Sleeve-Hub.csv",
+                                 "interface_Shaft-Sleeve.vtp",
+                                 "interface_Sleeve-Hub.vtp",
+                                 "report.md",
+                                 "plots.gp",
+                                 "contact_pressure.png",
+                                 "convergence.png"})
     std::cout << "  " << file << ": "
               << (std::filesystem::exists(dir + "/" + file) ? "written" :
                                                               "MISSING")
@@ -182,9 +208,7 @@ main()
   std::cout << "ISO fits (Fit/ISO fit = H7/s6 for every joint, the "
                "Shaft-Sleeve joint its own H7/u6):\n";
   {
-    std::ifstream in(example);
-    std::string   text((std::istreambuf_iterator<char>(in)),
-                     std::istreambuf_iterator<char>());
+    std::string text = example_text();
     // The example's fits replaced by ISO fits.
     const std::size_t a = text.find("subsection Fit");
     const std::size_t b = text.find("subsection Mesh");
@@ -208,8 +232,199 @@ main()
       }
   }
 
+  std::cout << "roughness (Fit/Shaft-Sleeve/Inner 4 um, Outer 6 um; "
+               "Fit/Outer roughness Rz 3 um for the other joint):\n";
+  {
+    const nlohmann::json rough
+      = run_example("rough",
+                    "--set 'Fit/Shaft-Sleeve/Inner roughness Rz=4' --set "
+                    "'Fit/Shaft-Sleeve/Outer roughness Rz=6' --set "
+                    "'Fit/Outer roughness Rz=3'");
+    // DIN 7190-1: U_w = U - 0.8 (Rz_i + Rz_o).
+    const double                     U0 = 0.04 - 0.8e-3 * (4. + 6.);
+    const double                     U1 = 0.06 - 0.8e-3 * (0. + 3.);
+    const coaxfit::CompoundCylinders smoothed(rings, {U0, U1});
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const nlohmann::json &j = rough["joints"][k];
+        std::cout
+          << "  " << j["name"].get<std::string>() << ": U "
+          << j["diametral_interference"].get<double>() << " mm, smoothing loss "
+          << j["smoothing_loss"].get<double>() << " mm, U_w "
+          << agreement(j["effective_interference"], k == 0 ? U0 : U1, 1e-12)
+          << " with U - 0.8 (Rz_i + Rz_o); closed form with U_w "
+          << smoothed.pressure(k) << " MPa: mean "
+          << agreement(j["pressure"]["mean"], smoothed.pressure(k), 1e-6)
+          << '\n';
+      }
+  }
+
+  std::cout << "the verdict (each criterion against its hand figure):\n";
+  {
+    const auto verdict = [](const nlohmann::json &j) {
+      std::cout << "  verdict ok " << j["verdict"]["ok"];
+      for (const auto &f : j["verdict"]["failed"])
+        std::cout << "; " << f.get<std::string>();
+      std::cout << '\n';
+    };
+    std::cout << "  the example (no strength, no torque: nothing judged):\n";
+    verdict(gs);
+    // The sleeve's von Mises stress at its bore, from the closed form's
+    // radial and hoop stresses there.
+    const double p0 = exact.pressure(0), p1 = exact.pressure(1);
+    const double a2 = 30. * 30., b2 = 45. * 45.;
+    const double hoop_sleeve = (p0 * (a2 + b2) - 2. * p1 * b2) / (b2 - a2);
+    const double vm_sleeve
+      = std::sqrt(p0 * p0 + hoop_sleeve * hoop_sleeve + p0 * hoop_sleeve);
+    std::cout << "  Material/Sleeve/Yield strength = 100 MPa, Design/Yield "
+                 "safety = 1.5; by hand 100 / "
+              << vm_sleeve << " = " << 100. / vm_sleeve << ":\n";
+    const nlohmann::json yield
+      = run_example("yield",
+                    "--set 'Material/Sleeve/Yield strength=100' --set "
+                    "'Design/Yield safety=1.5'");
+    // The FE's surface stress carries its discretization error (2.4e-4).
+    std::cout << "  the run's yield safety of the Sleeve "
+              << agreement(yield["bodies"][1]["yield_safety"],
+                           100. / vm_sleeve,
+                           1e-3)
+              << " (1e-3)\n";
+    verdict(yield);
+    // Torque capacity nu p pi D^2 l / 2 of each joint, l = 60 mm.
+    const double T0 = 0.1 * p0 * M_PI * 60. * 60. * 60. / 2. / 1000.;
+    const double T1 = 0.1 * p1 * M_PI * 90. * 90. * 60. / 2. / 1000.;
+    std::cout << "  Fit/Friction coefficient = 0.1, Design/Required torque "
+                 "= 1500 N m, Design/Slip safety = 1.2; by hand "
+              << T0 / 1500. << " and " << T1 / 1500. << ":\n";
+    const nlohmann::json slip
+      = run_example("slip",
+                    "--set 'Fit/Friction coefficient=0.1' --set "
+                    "'Design/Required torque=1500' --set 'Design/Slip "
+                    "safety=1.2'");
+    std::cout
+      << "  the run's safeties against slip "
+      << agreement(slip["joints"][0]["design"]["slip_safety"], T0 / 1500., 1e-6)
+      << " and "
+      << agreement(slip["joints"][1]["design"]["slip_safety"], T1 / 1500., 1e-6)
+      << " (1e-6)\n";
+    verdict(slip);
+    // The hub's hoop stress at its bore, p1 (b^2 + a^2) / (b^2 - a^2).
+    const double hoop_hub
+      = p1 * (80. * 80. + 45. * 45.) / (80. * 80. - 45. * 45.);
+    std::cout << "  Material/Hub/Kind = brittle, Tensile strength = 100 MPa "
+                 "(Design/Fracture safety 2); by hand 100 / "
+              << hoop_hub << " = " << 100. / hoop_hub << ":\n";
+    const nlohmann::json brittle
+      = run_example("brittle",
+                    "--set 'Material/Hub/Kind=brittle' --set "
+                    "'Material/Hub/Tensile strength=100'");
+    std::cout << "  the run's safety against fracture of the Hub "
+              << agreement(brittle["bodies"][2]["fracture_safety"],
+                           100. / hoop_hub,
+                           1e-3)
+              << " (1e-3)\n";
+    verdict(brittle);
+    std::cout << "  the sleeve 0.04 mm loose in the hub (a clearance may "
+                 "stand open):\n";
+    verdict(loose);
+    std::cout << "  Rz 50 um on both surfaces of the 0.04 mm joint (U_w "
+                 "-0.04 mm: a press fit the roughness turns loose):\n";
+    verdict(run_example("eaten",
+                        "--set 'Fit/Shaft-Sleeve/Inner roughness Rz=50' "
+                        "--set 'Fit/Shaft-Sleeve/Outer roughness Rz=50'"));
+    std::cout << "  Fit/Friction coefficient 0.1, Required torque 1742.5 N "
+                 "m (a safety just below 1 is printed with the digits that "
+                 "tell it from 1):\n";
+    verdict(run_example("limit",
+                        "--set 'Fit/Friction coefficient=0.1' --set "
+                        "'Design/Required torque=1742.5'"));
+  }
+
+  std::cout << "Coupling/Max steps = 2 (not converged: exit 2, the last "
+               "state written):\n";
+  {
+    std::filesystem::remove_all("unconverged");
+    const RunResult r
+      = run_coaxfit("unconverged", "--set 'Coupling/Max steps=2' " + example);
+    const nlohmann::json j = read_summary("unconverged");
+    std::cout << "  exit code " << r.exit_code << ", converged "
+              << j["converged"] << ", verdict failed " << j["verdict"]["failed"]
+              << '\n';
+  }
+
+  std::cout << "the hub renamed Housing, run into the directory of the "
+               "Shaft, Sleeve, Hub run, then a run of two bodies into it:\n";
+  {
+    std::string text = example_text();
+    replace_all(text, "Hub", "Housing");
+    std::ofstream("housing.prm") << text;
+    const RunResult a = run_coaxfit("gs", "housing.prm");
+    std::cout << "  exit code " << a.exit_code << ", hub.vtu replaced by "
+              << "housing.vtu "
+              << (!std::filesystem::exists("gs/hub.vtu")
+                      && std::filesystem::exists("gs/housing.vtu") ?
+                    "yes" :
+                    "NO")
+              << '\n';
+    const RunResult b
+      = run_coaxfit("gs",
+                    "--set 'Output/Print timing=false' "
+                      + std::string(COAXFIT_SOURCE_DIR) + "/prm/default.prm");
+    std::cout << "  two bodies: exit code " << b.exit_code
+              << ", housing.vtu and interface_Shaft-Sleeve.vtp gone "
+              << (!std::filesystem::exists("gs/housing.vtu")
+                      && !std::filesystem::exists(
+                        "gs/interface_Shaft-Sleeve.vtp") ?
+                    "yes" :
+                    "NO")
+              << '\n';
+  }
+
+  std::cout << "bodies A, B_C, A_B, C (two joints would share the block "
+               "name contact_a_b_c):\n";
+  {
+    std::string text = example_text();
+    // Shaft, Sleeve, Hub become A, B_C, A_B, and a ring C is added.
+    replace_all(text, "Shaft, Sleeve, Hub", "A, B_C, A_B, C");
+    replace_all(text,
+                "Report surfaces = Hub outer",
+                "Report surfaces = C outer");
+    replace_all(text, "Shaft-Sleeve", "A-B_C");
+    replace_all(text, "Sleeve-Hub", "B_C-A_B");
+    replace_all(text, "subsection Shaft\n", "subsection A\n");
+    replace_all(text, "subsection Sleeve\n", "subsection B_C\n");
+    replace_all(text, "subsection Hub\n", "subsection A_B\n");
+    replace_all(text,
+                "subsection Geometry\n",
+                "subsection Geometry\n  subsection C\n    set Inner "
+                "diameter = 160\n    set Outer diameter = 200\n    set "
+                "Length = 60\n  end\n");
+    replace_all(text,
+                "subsection Material\n",
+                "subsection Material\n  subsection C\n    set E = 70000\n "
+                "   set nu = 0.33\n  end\n");
+    replace_all(text,
+                "subsection Fit\n",
+                "subsection Fit\n  subsection A_B-C\n    set Diametral "
+                "interference = 0.1\n  end\n");
+    std::ofstream("names.prm") << text;
+    std::filesystem::remove_all("names");
+    const RunResult r = run_coaxfit("names", "names.prm");
+    std::cout << "  exit code " << r.exit_code << "; solution.pvd blocks:";
+    std::ifstream pvd("names/solution.pvd");
+    std::string   line;
+    while (std::getline(pvd, line))
+      {
+        const std::size_t at = line.find("name=\"");
+        if (at != std::string::npos)
+          std::cout << ' '
+                    << line.substr(at + 6, line.find('"', at + 6) - at - 6);
+      }
+    std::cout << '\n';
+  }
+
   std::cout << "bad input:\n";
-  for (const std::string arguments :
+  for (const std::string &arguments :
        {std::string("--set 'Assembly/Bodies=Shaft, Sleeve, Shaft'"),
         std::string("--set 'Assembly/Bodies=Shaft, Sle-eve, Hub'"),
         std::string("--set 'Assembly/Bodies=Shaft'"),
@@ -228,6 +443,11 @@ main()
         std::string("--set 'Design/Required torque=500'"),
         std::string("--set 'Fit/Shaft-Sleeve/ISO fit=H7/s6'"),
         std::string("--set 'Fit/Sleeve-Hub/ISO fit=H7/z9'"),
+        std::string("--set 'Design/Slip safety=0.5'"),
+        std::string("--set 'Fit/Sleeve-Hub/Outer roughness Rz=-1'"),
+        std::string("--set 'Fit/Shaft-Sleeve/Diametral interference=-0.5' "
+                    "--set 'Fit/Inner roughness Rz=400'"),
+        std::string("--set 'Design/Fracture safety=nan'"),
         std::string(
           "--sweep 'Fit/Sleeve-Hub/Diametral interference=0.05:0.07:3'")})
     {

@@ -2,6 +2,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/base/input_error.h>
@@ -10,6 +11,7 @@
 #include <coaxfit/fe/body_stress.h>
 #include <coaxfit/fe/stack_mesh.h>
 #include <coaxfit/io/result_directory.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <algorithm>
 #include <chrono>
@@ -372,7 +374,9 @@ namespace coaxfit
         JointFigures      f;
         f.name                   = joint.name;
         f.diameter               = parameters.joint_diameter(k);
-        f.diametral_interference = parameters.fits[k].diametral_interference;
+        f.diametral_interference = parameters.fits[k].nominal_interference;
+        f.smoothing_loss         = parameters.fits[k].smoothing_loss;
+        f.effective_interference = parameters.fits[k].diametral_interference;
         const Vector<double> p   = solution.pressure(stack_joints, k);
         f.p_mid                  = p[0];
         f.p_min                  = *std::min_element(p.begin(), p.end());
@@ -441,6 +445,7 @@ namespace coaxfit
         BodyFigures f;
         f.name                = parameters.bodies[b];
         f.von_mises_mid_plane = f.von_mises_max = 0.;
+        f.hoop_mid_plane = -std::numeric_limits<double>::infinity();
         for (const double d : {parameters.rings[b].inner_diameter,
                                parameters.rings[b].outer_diameter})
           if (d > 0.)
@@ -449,12 +454,21 @@ namespace coaxfit
               {
                 f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
                 if (s.z == 0.)
-                  f.von_mises_mid_plane
-                    = std::max(f.von_mises_mid_plane, s.von_mises());
+                  {
+                    f.von_mises_mid_plane
+                      = std::max(f.von_mises_mid_plane, s.von_mises());
+                    f.hoop_mid_plane = std::max(f.hoop_mid_plane, s.hoop());
+                  }
               }
+        f.brittle = parameters.materials[b].kind == MaterialKind::brittle;
+        f.tensile_strength = parameters.materials[b].tensile_strength;
+        f.fracture_safety
+          = !f.brittle || f.tensile_strength <= 0. ? 0. :
+            f.hoop_mid_plane > 0. ? f.tensile_strength / f.hoop_mid_plane :
+                                    std::numeric_limits<double>::infinity();
         f.yield_strength = parameters.materials[b].yield_strength;
         // A body without stress never yields: its safety is infinite.
-        f.yield_safety = f.yield_strength <= 0. ?
+        f.yield_safety = f.yield_strength <= 0. || f.brittle ?
                            0. :
                          f.von_mises_mid_plane > 0. ?
                            f.yield_strength / f.von_mises_mid_plane :
@@ -464,6 +478,7 @@ namespace coaxfit
     surfaces_out.clear();
     for (const std::string &name : parameters.report_surfaces)
       surfaces_out.push_back(surface(name));
+    verdict               = Verdict(failed_criteria());
     timing["postprocess"] = seconds_since(start);
   }
 
@@ -479,12 +494,25 @@ namespace coaxfit
       out << (b > 0 ? ", " : "") << parameters.bodies[b];
     out << "), " << parameters.n_joints() << " joints\n";
     // The directory is checked before any work.
-    std::set<std::string> files
-      = {"summary.json", "parameters.prm", "convergence.csv", "solution.pvd"};
+    std::set<std::string> files = {"summary.json",
+                                   "parameters.prm",
+                                   "convergence.csv",
+                                   "solution.pvd",
+                                   "report.md",
+                                   "plots.gp",
+                                   "contact_pressure.png",
+                                   "convergence.png"};
     for (unsigned int k = 0; k < parameters.n_joints(); ++k)
-      files.insert("contact_pressure_" + parameters.joint_name(k) + ".csv");
+      {
+        files.insert("contact_pressure_" + parameters.joint_name(k) + ".csv");
+        files.insert("interface_" + parameters.joint_name(k) + ".vtp");
+      }
     for (const std::string &b : parameters.bodies)
       files.insert(Body::key_of(b) + ".vtu");
+    // An earlier result of two bodies in the same directory may be
+    // replaced as well.
+    for (const std::string &name : all_result_file_names())
+      files.insert(name);
     check_stack_memory(parameters);
     ResultDirectory directory(parameters.output_directory(), files);
 
@@ -503,15 +531,34 @@ namespace coaxfit
     for (unsigned int k = 0; k < parameters.n_joints(); ++k)
       out << "  " << parameters.joint_name(k) << ": D "
           << parameters.joint_diameter(k) << " mm, U "
-          << parameters.fits[k].diametral_interference << " mm ("
-          << parameters.fits[k].source << ")\n";
+          << parameters.fits[k].nominal_interference << " mm ("
+          << parameters.fits[k].source << ")"
+          << (parameters.fits[k].smoothing_loss > 0. ?
+                ", smoothing loss " + number(parameters.fits[k].smoothing_loss)
+                  + " mm, effective U_w "
+                  + number(parameters.fits[k].diametral_interference) + " mm" :
+                std::string())
+          << '\n';
     const bool ok = solve(progress ? &out : nullptr);
     if (!ok)
       {
-        out << "  not converged in " << steps << " steps\n";
-        return 2;
+        // The last state is written (converged false) unless it diverged:
+        // a non-finite force is never written out.
+        bool finite = true;
+        for (const Vector<double> &force : solution.force)
+          for (const double f : force)
+            finite = finite && std::isfinite(f);
+        out << "  not converged in " << steps << " steps (Coupling/Max steps "
+            << parameters.max_steps << ", Coupling/Tolerance "
+            << parameters.tolerance << ")"
+            << (finite ? "; the last state is written, converged false" :
+                         "; diverged (forces not finite): nothing written, "
+                         "the earlier results are untouched")
+            << '\n';
+        if (!finite)
+          return 2;
       }
-    if (parameters.method == SolverMethod::monolithic)
+    else if (parameters.method == SolverMethod::monolithic)
       out << "  contact problem solved, " << active_set_steps
           << " active set step(s)\n";
     else
@@ -562,7 +609,8 @@ namespace coaxfit
         out << "  " << f.name << ": von Mises " << std::setprecision(6)
             << f.von_mises_mid_plane << " MPa at the mid-plane, "
             << f.von_mises_max << " MPa at most on its surfaces";
-        if (f.yield_strength > 0.)
+        // A brittle body is judged against fracture, not yield.
+        if (f.yield_strength > 0. && !f.brittle)
           {
             out << "; safety against yield ";
             if (std::isinf(f.yield_safety))
@@ -570,12 +618,22 @@ namespace coaxfit
             else
               out << f.yield_safety;
           }
-        if (f.yield_strength > 0.)
+        if (f.yield_strength > 0. && !f.brittle)
           out << " (R_e " << f.yield_strength << " MPa)"
               << (std::isinf(f.yield_safety) ? " (no stress)" : "")
               << (f.yield_safety < 1. ? ": YIELDS, the elastic answer "
                                         "does not hold" :
                                         "");
+        if (f.brittle && f.tensile_strength > 0.)
+          {
+            out << "; brittle: hoop " << f.hoop_mid_plane
+                << " MPa at the mid-plane, safety against fracture ";
+            if (std::isinf(f.fracture_safety))
+              out << "infinite (no tension)";
+            else
+              out << f.fracture_safety;
+            out << " (R_m " << f.tensile_strength << " MPa)";
+          }
         out << '\n';
       }
     for (const SurfaceFigures &s : surfaces_out)
@@ -584,13 +642,17 @@ namespace coaxfit
           << ", max " << s.u_max << "; diameter change " << 2. * s.u_mean
           << " mm\n";
 
+    out << "  " << verdict.line() << '\n';
+
     timing["total"] = seconds_since(start);
     output_results(directory.staging_path());
+    if (plots_note.rfind("plots skipped", 0) == 0)
+      out << "  " << plots_note << '\n';
     directory.commit(out);
     out << "  results in " << parameters.output_directory() << '\n';
     if (parameters.print_timing)
       out << "  wall time " << std::setprecision(3) << seconds_since(start)
           << " s\n";
-    return 0;
+    return converged ? 0 : 2;
   }
 } // namespace coaxfit

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 namespace coaxfit
 {
@@ -30,6 +31,8 @@ namespace coaxfit
       j["name"]                   = f.name;
       j["diameter"]               = f.diameter;
       j["diametral_interference"] = f.diametral_interference;
+      j["smoothing_loss"]         = f.smoothing_loss;
+      j["effective_interference"] = f.effective_interference;
       j["pressure"]               = {{"at_mid_plane", number_or_null(f.p_mid)},
                                      {"mean", number_or_null(f.p_mean)},
                                      {"min", number_or_null(f.p_min)},
@@ -124,6 +127,10 @@ namespace coaxfit
               bodies[b]->output_results(fields[b], out, b, oversize, offset);
             });
           }
+        for (unsigned int k = 0; k + 1 < N; ++k)
+          write_interface(directory, k);
+        // Named blocks: a body each, then each joint's contact surface
+        // (`contact_<inner>_<outer>`, lower case as the bodies' files).
         const std::string name = directory + "/solution.pvd";
         std::ofstream     out  = open_result_file(name);
         out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
@@ -133,15 +140,35 @@ namespace coaxfit
               << "\" name=\"" << Body::key_of(parameters.bodies[b])
               << "\" file=\"" << Body::key_of(parameters.bodies[b])
               << ".vtu\"/>\n";
+        // ParaView's block selectors take letters, digits and _ only: a
+        // name that two joints (or a body) would share gets the joint's
+        // number (bodies A_B, C and A, B_C).
+        std::set<std::string> used;
+        for (unsigned int b = 0; b < N; ++b)
+          used.insert(Body::key_of(parameters.bodies[b]));
+        for (unsigned int k = 0; k + 1 < N; ++k)
+          {
+            std::string block = "contact_" + Body::key_of(parameters.bodies[k])
+                                + '_' + Body::key_of(parameters.bodies[k + 1]);
+            for (unsigned int n = k + 1; used.count(block) > 0; n += N)
+              block += '_' + std::to_string(n);
+            used.insert(block);
+            out << "<DataSet timestep=\"0\" group=\"\" part=\"" << N + k
+                << "\" name=\"" << block << "\" file=\"interface_"
+                << stack_joints[k].name << ".vtp\"/>\n";
+          }
         out << "</Collection>\n</VTKFile>\n";
         close_result_file(out, name);
       }
+
+    plots_note = write_plots(directory);
 
     // summary.json, last.
     Json j;
     j["case"]      = parameters.case_name;
     j["assembly"]  = {{"bodies", parameters.bodies}};
     j["converged"] = converged;
+    j["verdict"]   = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
     Json method;
     method["method"] = parameters.method == SolverMethod::monolithic ?
                          "monolithic" :
@@ -175,11 +202,17 @@ namespace coaxfit
         Json b = {{"name", f.name},
                   {"von_mises_mid_plane", f.von_mises_mid_plane},
                   {"von_mises_max", f.von_mises_max}};
-        if (f.yield_strength > 0.)
+        if (f.yield_strength > 0. && !f.brittle)
           {
             b["yield_strength"] = f.yield_strength;
             // null for a body without stress (infinite safety).
             b["yield_safety"] = number_or_null(f.yield_safety);
+          }
+        b["hoop_mid_plane"] = number_or_null(f.hoop_mid_plane);
+        if (f.brittle && f.tensile_strength > 0.)
+          {
+            b["tensile_strength"] = f.tensile_strength;
+            b["fracture_safety"]  = number_or_null(f.fracture_safety);
           }
         bodies_json.push_back(b);
       }
@@ -205,5 +238,7 @@ namespace coaxfit
     std::ofstream     out  = open_result_file(name);
     out << j.dump(2) << '\n';
     close_result_file(out, name);
+    // The report last: it lists the files written.
+    write_report(directory);
   }
 } // namespace coaxfit

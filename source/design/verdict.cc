@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace coaxfit
 {
@@ -117,6 +118,12 @@ namespace coaxfit
                            std::string("cannot be cooled (no thermal "
                                        "expansion)")));
   }
+
+
+
+  Verdict::Verdict(std::vector<std::string> failed)
+    : failed(std::move(failed))
+  {}
 
 
 

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <regex>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -19,6 +20,22 @@ namespace coaxfit
 
   namespace
   {
+    /**
+     * Whether @p name is a file of an assembly of several bodies, named
+     * after its bodies and joints (`sleeve.vtu`, `interface_Shaft-Sleeve.vtp`,
+     * `contact_pressure_Shaft-Sleeve.csv`): an earlier result of another
+     * body list, which a run may replace.
+     */
+    bool
+    assembly_result_file(const std::string &name)
+    {
+      static const std::regex files(
+        "[a-z][a-z0-9_]{0,39}\\.vtu|"
+        "(interface|contact_pressure)_[A-Za-z][A-Za-z0-9_]{0,39}-"
+        "[A-Za-z][A-Za-z0-9_]{0,39}\\.(vtp|csv)");
+      return std::regex_match(name, files);
+    }
+
     const std::string partial_marker = ".partial-";
 
     [[noreturn]] void
@@ -159,7 +176,9 @@ namespace coaxfit
         for (auto entry = fs::recursive_directory_iterator(target, error);
              entry != fs::recursive_directory_iterator();
              entry.increment(error))
-          if (result_files.count(entry->path().filename().string()) == 0
+          if ((result_files.count(entry->path().filename().string()) == 0
+               && !(entry.depth() == 0 && entry->is_regular_file()
+                    && assembly_result_file(entry->path().filename().string())))
               || (entry->is_directory() && entry.depth() > 0))
             refuse(target_name,
                    "contains '" + fs::relative(entry->path(), target).string()

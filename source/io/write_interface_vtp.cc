@@ -1,3 +1,4 @@
+#include <coaxfit/io/polyline_vtp.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <array>
@@ -17,8 +18,6 @@ namespace coaxfit
     const InterfaceSolver  &solver    = results.solver;
     const unsigned int      n         = interface.n_points();
     const Vector<double> gap = interface.gap(solver.u_shaft(), solver.u_hub());
-    // Written in full precision: the surfaces meet to round-off.
-    out.precision(17);
 
     // The total displacement (u_r, u_z) of each body's surface point i:
     // the body's own field (contact answer plus loads of operation), the
@@ -46,62 +45,37 @@ namespace coaxfit
            + (body == joint.inner ? interface.interference() : 0.),
          joint_field[body][1][i]}};
     };
-    const auto scalar =
-      [&](const std::string &array_name, const std::string &unit, auto value) {
-        out << "<DataArray type=\"Float64\" Name=\"" << array_name << '"'
-            << (unit.empty() ? "" : " units=\"" + unit + '"')
-            << " format=\"ascii\">\n";
-        for (unsigned int i = 0; i < n; ++i)
-          out << value(i) << (i + 1 < n ? ' ' : '\n');
-        out << "</DataArray>\n";
-      };
-    const auto vector
-      = [&](const std::string &array_name, const unsigned int body) {
-          out << "<DataArray type=\"Float64\" Name=\"" << array_name
-              << "\" units=\"mm\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const auto u = surface(body, i);
-              out << u[0] << ' ' << u[1] << " 0\n";
-            }
-          out << "</DataArray>\n";
-        };
-
-    out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"PolyData\" version=\"0.1\" "
-           "byte_order=\"LittleEndian\">\n<PolyData>\n"
-        << "<Piece NumberOfPoints=\"" << n
-        << "\" NumberOfVerts=\"0\" NumberOfLines=\"1\" "
-           "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-        << "<PointData Scalars=\"contact_pressure_MPa\" "
-           "Vectors=\"displacement_mm\">\n";
+    PolylineVtp vtp;
+    for (unsigned int i = 0; i < n; ++i)
+      vtp.points.push_back(
+        {{scene.bodies[scene.has_transfer() ? scene.point_body() : joint.outer]
+            .discretization->interface_points()[i][0],
+          interface.z()[i]}});
     // The outer side (the hub's bore), in place; the inner side's surface
     // meets it where the two are in contact.
-    vector("displacement_mm", joint.outer);
-    vector(scene.bodies[joint.inner].key() + "_displacement_mm", joint.inner);
-    scalar("contact_pressure_MPa", "MPa", [&](unsigned int i) {
-      return results.pressure.pressure[i];
-    });
-    scalar("gap_mm", "mm", [&](unsigned int i) { return gap[i]; });
-    scalar("contact_status", "", [&](unsigned int i) {
-      return solver.get_active_set().in_contact()[i] ? 1. : 0.;
-    });
-    scalar("body_id", "", [](unsigned int) { return 2.; });
-    out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const unsigned int body : {joint.outer, joint.inner})
+      {
+        PolylineVtp::VectorArray side{body == joint.outer ?
+                                        std::string("displacement_mm") :
+                                        scene.bodies[joint.inner].key()
+                                          + "_displacement_mm",
+                                      {}};
+        for (unsigned int i = 0; i < n; ++i)
+          side.values.push_back(surface(body, i));
+        vtp.vectors.push_back(side);
+      }
+    std::vector<double> status(n), body_id(n, 2.);
     for (unsigned int i = 0; i < n; ++i)
-      out << scene
-               .bodies[scene.has_transfer() ? scene.point_body() : joint.outer]
-               .discretization->interface_points()[i][0]
-          << ' ' << interface.z()[i] << " 0\n";
-    out << "</DataArray>\n</Points>\n<Lines>\n"
-        << "<DataArray type=\"Int32\" Name=\"connectivity\" "
-           "format=\"ascii\">\n";
-    for (unsigned int i = 0; i < n; ++i)
-      out << i << (i + 1 < n ? ' ' : '\n');
-    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
-           "format=\"ascii\">\n"
-        << n << "\n</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+      status[i] = solver.get_active_set().in_contact()[i] ? 1. : 0.;
+    vtp.scalars
+      = {{"contact_pressure_MPa",
+          "MPa",
+          std::vector<double>(results.pressure.pressure.begin(),
+                              results.pressure.pressure.end())},
+         {"gap_mm", "mm", std::vector<double>(gap.begin(), gap.end())},
+         {"contact_status", "", status},
+         {"body_id", "", body_id}};
+    vtp.write(out);
     close_result_file(out, directory + "/" + name);
     return name + ": the contact surface";
   }

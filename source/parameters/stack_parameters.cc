@@ -202,6 +202,25 @@ namespace coaxfit
                           "the joint diameter, the smallest, mean or "
                           "largest by Fit/Case. Empty: none.",
                       Patterns::Anything());
+    prm.add_parameter("Inner roughness Rz",
+                      inner_roughness,
+                      "Mean roughness depth Rz in micrometres of the inner "
+                      "body's seat at "
+                        + what
+                        + ". DIN 7190 takes the smoothing loss 0.8 "
+                          "(Rz_inner + Rz_outer) off the interference: the "
+                          "joint is solved with U_w = U - 0.8 (Rz_inner + "
+                          "Rz_outer). 0: Fit's value (itself 0 by "
+                          "default). Allowed: 0 to 1000.",
+                      Patterns::Double(0., 1000.));
+    prm.add_parameter("Outer roughness Rz",
+                      outer_roughness,
+                      "Mean roughness depth Rz in micrometres of the outer "
+                      "body's bore at "
+                        + what
+                        + " (see Inner roughness Rz). 0: Fit's value. "
+                          "Allowed: 0 to 1000.",
+                      Patterns::Double(0., 1000.));
     prm.add_parameter("Friction coefficient",
                       friction_coefficient,
                       "Friction coefficient nu_r of " + what
@@ -278,6 +297,30 @@ namespace coaxfit
       "slip is its torque capacity (with its Friction coefficient) over "
       "it. 0: none. Allowed: 0 to 1e9.",
       Patterns::Double(0., 1e9));
+    prm.add_parameter("Slip safety",
+                      slip_safety,
+                      "The safety against slip every joint must have, for "
+                      "the verdict (with a Required torque): a joint fails "
+                      "where its torque capacity over the required torque "
+                      "falls below this. 1: no joint may slip. Allowed: 1 "
+                      "to 100.",
+                      Patterns::Double(1., 100.));
+    prm.add_parameter("Yield safety",
+                      yield_safety,
+                      "The safety against yield (yield strength over the "
+                      "largest von Mises stress on its surfaces at the "
+                      "mid-plane) every body of metal or polymer with a "
+                      "yield strength must have, for the verdict. 1: no "
+                      "body may yield. Allowed: 1 to 100.",
+                      Patterns::Double(1., 100.));
+    prm.add_parameter("Fracture safety",
+                      fracture_safety,
+                      "The safety against fracture (tensile strength over "
+                      "the largest hoop tension on its surfaces at the "
+                      "mid-plane) every brittle body (Material/<body>/Kind, "
+                      "e.g. grey cast iron) with a tensile strength must "
+                      "have, for the verdict. Allowed: 1 to 100.",
+                      Patterns::Double(1., 100.));
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh");
@@ -434,12 +477,20 @@ namespace coaxfit
     for (unsigned int k = 0; k < n_joints(); ++k)
       {
         const double D = joint_diameter(k);
-        const double U = fits[k].diametral_interference;
+        const double U = fits[k].nominal_interference;
         if (std::abs(U) > 0.01 * D)
           throw InputError("parameter Fit/" + joint_name(k)
                            + "/Diametral interference = " + number(U)
                            + ": allowed |U| <= 1 % of the joint diameter "
                            + number(D) + " mm (the linear range)");
+        const double U_w = fits[k].diametral_interference;
+        if (std::abs(U_w) > 0.01 * D)
+          throw InputError(
+            "parameter Fit/" + joint_name(k)
+            + "/Inner roughness Rz, Outer roughness Rz: the smoothing loss "
+            + number(fits[k].smoothing_loss) + " mm leaves U_w = " + number(U_w)
+            + " mm; allowed |U_w| <= 1 % of the joint diameter " + number(D)
+            + " mm (the linear range)");
       }
     if (required_torque > 0.)
       for (unsigned int k = 0; k < n_joints(); ++k)
@@ -666,6 +717,18 @@ namespace coaxfit
         fit.friction_coefficient = entries.friction_coefficient > 0. ?
                                      entries.friction_coefficient :
                                      p.default_fit.friction_coefficient;
+        // So does a roughness; the smoothing loss (DIN 7190-1) is taken
+        // off the nominal interference.
+        fit.inner_roughness      = entries.inner_roughness > 0. ?
+                                     entries.inner_roughness :
+                                     p.default_fit.inner_roughness;
+        fit.outer_roughness      = entries.outer_roughness > 0. ?
+                                     entries.outer_roughness :
+                                     p.default_fit.outer_roughness;
+        fit.nominal_interference = fit.diametral_interference;
+        fit.smoothing_loss
+          = 0.8e-3 * (fit.inner_roughness + fit.outer_roughness);
+        fit.diametral_interference -= fit.smoothing_loss;
         p.fits.push_back(fit);
       }
     if (!missing.empty())

@@ -8,8 +8,9 @@
 OUTPUT_DIR is a run's result directory (the one holding solution.pvd; for a
 run with Fit/Case = all, its mean/ case is taken unless a case directory is
 given). Every block of solution.pvd is followed: an unstructured grid is a
-body (today shaft and hub), a polydata block is a contact surface (today
-contact_surface). A half model (every z >= 0, what coaxfit computes for
+body (shaft and hub, or every body of an assembly: Assembly/Bodies), a
+polydata block is a contact surface (contact_surface, or contact_<inner>_
+<outer> for each joint of an assembly). A half model (every z >= 0, what coaxfit computes for
 plain cylinders and symmetric sections; summary.json's
 geometry.sections.model says which for sections) is mirrored about the
 mid-plane z = 0; a whole model is drawn as it is.
@@ -829,8 +830,13 @@ class Viewer:
             display.AmbientColor = display.DiffuseColor = (SHAFT_PLAIN, HUB_PLAIN)[k % 2]
         lines = []
         for c in self.contacts:
-            for vector, side in (("displacement_mm", "hub's bore"),
-                                 ("shaft_displacement_mm", "shaft's surface")):
+            # The outer side's displacement_mm, the inner side's
+            # <inner body>_displacement_mm (shaft_ in a run of two bodies).
+            inner = [a for a in c.arrays
+                     if a.endswith("_displacement_mm") and a != "displacement_mm"]
+            for vector, side in (("displacement_mm", "outer side"),
+                                 (inner[0] if inner else "displacement_mm",
+                                  "inner side")):
                 warped = radial_warp(c.line, vector, factor, trend,
                                      "%s: %s, %s" % (label, c.name, side))
                 if crosses:
@@ -844,7 +850,7 @@ class Viewer:
         add_title(view, ["coaxfit %s: separated zone %d, z = %.4g to %.4g mm"
                          % (self.case, number, z_from, z_to),
                          "radial displacement x %.3g relative to a parabola fitted to the "
-                         "hub's bore: largest gap %.3g mm drawn %.3g mm"
+                         "joint's outer side: largest gap %.3g mm drawn %.3g mm"
                          % (factor, zone["gap"], factor * zone["gap"]),
                          plain + "; lines: the two sides of the joint, coloured by the "
                          "contact pressure, white where separated"], "%s: title" % label)

@@ -2,6 +2,7 @@
 #define coaxfit_stack_fit_h
 
 #include <coaxfit/coupling/stack_coupling.h>
+#include <coaxfit/design/verdict.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/parameters/stack_parameters.h>
 #include <coaxfit/solvers/body_solver.h>
@@ -25,7 +26,9 @@ namespace coaxfit
   {
     std::string  name;
     double       diameter;                    ///< mm
-    double       diametral_interference;      ///< mm
+    double       diametral_interference;      ///< mm, nominal
+    double       smoothing_loss;              ///< mm, 0.8 (Rz_i + Rz_o)
+    double       effective_interference;      ///< mm, U_w (solved with)
     double       p_mid, p_mean, p_min, p_max; ///< MPa, in the assembly
     bool         closed;                      ///< every point in contact
     double       contact_length;              ///< mm, full length in contact
@@ -57,6 +60,15 @@ namespace coaxfit
     double      von_mises_max;       ///< MPa, over the body's surfaces
     double      yield_strength;      ///< MPa; 0: unknown
     double      yield_safety;        ///< 0: unknown yield strength
+    bool        brittle;             ///< Material/<body>/Kind brittle
+    double      tensile_strength;    ///< R_m, MPa; 0: unknown
+    /** The largest hoop stress on its surfaces at the mid-plane (MPa). */
+    double hoop_mid_plane;
+    /**
+     * R_m over the hoop tension (a brittle body with R_m; infinite
+     * without tension); 0: not judged.
+     */
+    double fracture_safety;
   };
 
   /**
@@ -127,6 +139,19 @@ namespace coaxfit
       return bodies_out;
     }
 
+    /**
+     * The verdict of the assembly after postprocess(): each joint with an
+     * interference touches, each joint's safety against slip reaches
+     * Design/Slip safety (with a required torque), each body's safety
+     * against yield (brittle: fracture) reaches Design/Yield safety
+     * (Design/Fracture safety).
+     */
+    const Verdict &
+    get_verdict() const
+    {
+      return verdict;
+    }
+
     const std::vector<SurfaceFigures> &
     surface_figures() const
     {
@@ -159,6 +184,32 @@ namespace coaxfit
     }
 
   private:
+    /** The criteria of the verdict the figures fail (get_verdict()). */
+    std::vector<std::string>
+    failed_criteria() const;
+
+    /**
+     * interface_<joint>.vtp: the contact surface of joint @p k as a
+     * polyline at the joint's radius (the outer side's displacement, the
+     * inner side's as `<inner>_displacement_mm`, pressure, gap, status),
+     * into @p directory.
+     */
+    void
+    write_interface(const std::string &directory, unsigned int k) const;
+
+    /**
+     * plots.gp, contact_pressure.png (each joint in the assembly and
+     * alone, and the plane-stress estimates) and convergence.png, drawn
+     * by gnuplot in @p directory; what was written, or why the plots
+     * were skipped.
+     */
+    std::string
+    write_plots(const std::string &directory) const;
+
+    /** report.md: inputs, verdict, joints, bodies, surfaces. */
+    void
+    write_report(const std::string &directory) const;
+
     /** The two bodies of joint @p k alone: their contact, and steps. */
     StackState
     joint_alone(unsigned int k, unsigned int &staggered_steps) const;
@@ -179,12 +230,15 @@ namespace coaxfit
     std::vector<JointFigures>                        joints_out;
     std::vector<SurfaceFigures>                      surfaces_out;
     std::vector<BodyFigures>                         bodies_out;
-    std::vector<std::pair<double, double>>           history;
-    bool                                             converged        = false;
-    unsigned int                                     steps            = 0;
-    unsigned int                                     body_solves      = 0;
-    unsigned int                                     active_set_steps = 0;
-    std::map<std::string, double>                    timing;
+    Verdict verdict = Verdict(std::vector<std::string>());
+    /** What output_results() said of the plots (drawn, or skipped why). */
+    mutable std::string                    plots_note;
+    std::vector<std::pair<double, double>> history;
+    bool                                   converged        = false;
+    unsigned int                           steps            = 0;
+    unsigned int                           body_solves      = 0;
+    unsigned int                           active_set_steps = 0;
+    std::map<std::string, double>          timing;
   };
 } // namespace coaxfit
 

@@ -28,6 +28,13 @@ namespace coaxfit
             bool                     converged);
 
     /**
+     * The verdict of criteria judged elsewhere (an assembly of several
+     * bodies): each of @p failed names one criterion the run fails; none:
+     * OK.
+     */
+    explicit Verdict(std::vector<std::string> failed);
+
+    /**
      * The verdict of a fit selection (Design/Mode = select) that found no
      * fit: the conflict @p conflict (FitSelection::conflict()).
      */

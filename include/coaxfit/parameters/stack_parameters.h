@@ -36,7 +36,16 @@ namespace coaxfit
    */
   struct JointFit
   {
-    double      diametral_interference = 0.; ///< mm; negative: a clearance
+    /**
+     * mm; negative: a clearance. After read_stack_parameters() the
+     * effective interference U_w the joint is solved with: the nominal
+     * one less the smoothing loss.
+     */
+    double      diametral_interference = 0.;
+    double      inner_roughness      = 0.; ///< Rz of the inner body's seat, um
+    double      outer_roughness      = 0.; ///< Rz of the outer body's bore, um
+    double      nominal_interference = 0.; ///< U as given (derived), mm
+    double      smoothing_loss       = 0.; ///< 0.8 (Rz_i + Rz_o), mm
     double      friction_coefficient = 0.; ///< 0: not given (no torque figures)
     std::string iso_fit;                   ///< `H7/s6`; empty: none
     std::string source; ///< where the interference comes from (derived)
@@ -87,6 +96,12 @@ namespace coaxfit
      * 0: none (no safety against slip).
      */
     double required_torque = 0.;
+    /** Design/Slip safety: each joint's least safety against slip. */
+    double slip_safety = 1.;
+    /** Design/Yield safety: each ductile body's least safety. */
+    double yield_safety = 1.;
+    /** Design/Fracture safety: each brittle body's least safety. */
+    double fracture_safety = 2.;
     /**
      * Fit/Case: which interference of the joints' ISO fits (every joint
      * the same): min, mean or max.

@@ -1,0 +1,192 @@
+#include <coaxfit/app/stack_fit.h>
+#include <coaxfit/design/design_report.h>
+#include <coaxfit/io/result_writers.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** @p x in MPa, or `not given` for 0. */
+    std::string
+    strength(const double x)
+    {
+      return x > 0. ? design_figure(x) + " MPa" : std::string("not given");
+    }
+
+    /** A safety: `-` where not judged, `infinite` without stress. */
+    std::string
+    safety(const double x)
+    {
+      return x == 0.       ? std::string("-") :
+             std::isinf(x) ? std::string("infinite") :
+                             design_figure(x);
+    }
+  } // namespace
+
+
+
+  void
+  StackFit::write_report(const std::string &directory) const
+  {
+    const StackParameters &p    = parameters;
+    const std::string      name = directory + "/report.md";
+    std::ofstream          md   = open_result_file(name);
+    md << "# coaxfit: " << p.case_name << "\n\nAn assembly of "
+       << p.bodies.size() << " coaxial bodies, inside out, and its "
+       << p.n_joints() << " joints, all solved at once.\n\n";
+    if (verdict.ok())
+      md << "Verdict: OK\n\n";
+    else
+      {
+        md << "Verdict: FAILED\n\n";
+        for (const std::string &f : verdict.failed)
+          md << "- " << f << '\n';
+        md << '\n';
+      }
+    md << "The criteria: each joint with an interference touches; with a "
+          "required torque each joint's safety against slip reaches "
+       << design_figure(p.slip_safety)
+       << " (Design/Slip safety); each body's safety against yield "
+          "reaches "
+       << design_figure(p.yield_safety)
+       << " (Design/Yield safety), a brittle body's against fracture "
+       << design_figure(p.fracture_safety)
+       << " (Design/Fracture safety); a body without its strength is not "
+          "judged.\n\n";
+
+    md << "## Bodies\n\n| body | bore D_i mm | outer D_a mm | length mm | "
+          "material | E MPa | nu | R_e | R_m | kind |\n"
+          "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (unsigned int b = 0; b < p.bodies.size(); ++b)
+      {
+        const Material &m = p.materials[b];
+        md << "| " << p.bodies[b] << " | "
+           << (p.rings[b].inner_diameter > 0. ?
+                 design_figure(p.rings[b].inner_diameter) :
+                 std::string("solid"))
+           << " | " << design_figure(p.rings[b].outer_diameter) << " | "
+           << design_figure(p.rings[b].length) << " | " << m.name << " | "
+           << design_figure(m.E) << " | " << m.nu << " | "
+           << strength(m.yield_strength) << " | "
+           << strength(m.tensile_strength) << " | " << to_string(m.kind)
+           << " |\n";
+      }
+
+    md << "\n## Joints\n\nPressures in MPa: in the assembly (at the "
+          "mid-plane, mean over the joint, least and largest nodal value), "
+          "alone (the joint's two bodies with the others removed, the same "
+          "meshes) and the plane-stress compound-cylinder estimates "
+          "(exact for bodies of equal length with free ends).\n\n"
+          "U is the nominal diametral interference, U_w what is left "
+          "after the smoothing loss 0.8 (Rz_inner + Rz_outer) of DIN "
+          "7190-1, the interference the joint is solved with.\n\n"
+          "| joint | D mm | U mm | from | U_w mm | p(0) | mean | min | max "
+          "| contact | alone: mean | estimate | estimate alone |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (unsigned int k = 0; k < joints_out.size(); ++k)
+      {
+        const JointFigures &f = joints_out[k];
+        md << "| " << f.name << " | " << design_figure(f.diameter) << " | "
+           << f.diametral_interference << " | " << p.fits[k].source << " | "
+           << f.effective_interference << " | " << design_figure(f.p_mid)
+           << " | " << design_figure(f.p_mean) << " | "
+           << design_figure(f.p_min) << " | " << design_figure(f.p_max) << " | "
+           << (f.closed ?
+                 std::string("closed") :
+                 std::to_string(f.separated_points) + " of "
+                   + std::to_string(stack_joints[k].n_points())
+                   + " points open, diametral gap " + design_figure(f.gap_min)
+                   + " to " + design_figure(f.gap_max) + " mm")
+           << " | " << design_figure(f.alone_p_mean) << " | "
+           << design_figure(f.lame_p) << " | " << design_figure(f.lame_alone_p)
+           << " |\n";
+      }
+    bool friction = false;
+    for (const JointFigures &f : joints_out)
+      friction = friction || f.friction_coefficient > 0.;
+    if (friction)
+      {
+        md << "\n| joint | friction coefficient | torque capacity N m | "
+              "safety against slip |\n|---|---|---|---|\n";
+        for (const JointFigures &f : joints_out)
+          md << "| " << f.name << " | "
+             << (f.friction_coefficient > 0. ?
+                   design_figure(f.friction_coefficient) :
+                   std::string("not given"))
+             << " | "
+             << (f.friction_coefficient > 0. ?
+                   design_figure(f.torque_capacity) :
+                   std::string("-"))
+             << " | "
+             << (p.required_torque > 0. ? safety(f.slip_safety) :
+                                          std::string("-"))
+             << " |\n";
+        if (p.required_torque > 0.)
+          md << "\nThe required torque " << design_figure(p.required_torque)
+             << " N m passes through every joint (Design/Required "
+                "torque).\n";
+      }
+
+    md << "\n## Strength of the bodies\n\nOn the bodies' joint and free "
+          "surfaces, MPa; the safeties at the mid-plane.\n\n"
+          "| body | von Mises, mid-plane | von Mises, largest | hoop, "
+          "mid-plane | safety against yield | safety against fracture "
+          "|\n|---|---|---|---|---|---|\n";
+    for (const BodyFigures &f : bodies_out)
+      md << "| " << f.name << " | " << design_figure(f.von_mises_mid_plane)
+         << " | " << design_figure(f.von_mises_max) << " | "
+         << design_figure(f.hoop_mid_plane) << " | "
+         << (f.brittle ? std::string("- (brittle)") : safety(f.yield_safety))
+         << " | " << safety(f.fracture_safety) << " |\n";
+
+    if (!surfaces_out.empty())
+      {
+        md << "\n## Reported surfaces\n\n| surface | D mm | u_r mean mm | "
+              "min | max | change of diameter mm |\n"
+              "|---|---|---|---|---|---|\n";
+        for (const SurfaceFigures &s : surfaces_out)
+          md << "| " << s.name << " | " << design_figure(2. * s.radius) << " | "
+             << design_figure(s.u_mean) << " | " << design_figure(s.u_min)
+             << " | " << design_figure(s.u_max) << " | "
+             << design_figure(2. * s.u_mean) << " |\n";
+      }
+
+    md << "\n## Solution\n\n";
+    unsigned int dofs = 0;
+    for (const auto &b : bodies)
+      dofs += b->get_dof_handler().n_dofs();
+    md << dofs << " degrees of freedom in " << bodies.size() << " bodies (FE_Q("
+       << p.mesh.degree << ")); ";
+    if (p.method == SolverMethod::monolithic)
+      md << "the contact of all joints solved monolithically on the "
+            "condensed compliances, "
+         << active_set_steps << " active set step(s).\n";
+    else
+      md << "the staggered Dirichlet-Neumann process over all joints ("
+         << (p.ordering == StackOrdering::jacobi ? "Jacobi" : "Gauss-Seidel")
+         << "), converged in " << steps << " steps (" << body_solves
+         << " body solves) to " << p.tolerance << ".\n";
+    // The files as written (without VTU files, plots or the convergence
+    // plot of a monolithic run, the list is shorter).
+    std::set<std::string> files = {"report.md"};
+    for (const auto &entry : std::filesystem::directory_iterator(directory))
+      files.insert(entry.path().filename().string());
+    md << "\nFiles: ";
+    for (const std::string &file : files)
+      md << (file == *files.begin() ? "" : ", ") << file;
+    md << " (summary.json holds every figure"
+       << (files.count("solution.pvd") > 0 ?
+             ", solution.pvd opens every body and joint in ParaView" :
+             "")
+       << (plots_note.rfind("plots skipped", 0) == 0 ?
+             ", " + plots_note :
+             std::string(", plots.gp redraws the plots"))
+       << ", parameters.prm repeats the run).\n";
+    close_result_file(md, name);
+  }
+} // namespace coaxfit

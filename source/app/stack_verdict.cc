@@ -1,0 +1,80 @@
+#include <coaxfit/app/stack_fit.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace
+  {
+    /** @p x with @p digits significant digits. */
+    std::string
+    figure(const double x, const int digits = 3)
+    {
+      std::ostringstream s;
+      s.precision(digits);
+      s << x;
+      return s.str();
+    }
+
+    /**
+     * `a < b` with as many digits (3 at least) as tell the two apart: a
+     * safety just below its requirement is not printed as `1 < 1`.
+     */
+    std::string
+    below(const double a, const double b)
+    {
+      int digits = 3;
+      while (digits < 15 && figure(a, digits) == figure(b, digits))
+        ++digits;
+      return figure(a, digits) + " < " + figure(b, digits);
+    }
+  } // namespace
+
+
+
+  std::vector<std::string>
+  StackFit::failed_criteria() const
+  {
+    std::vector<std::string> failed;
+    if (!converged)
+      failed.push_back("the coupling did not converge");
+    for (unsigned int k = 0; k < joints_out.size(); ++k)
+      {
+        const JointFigures &f = joints_out[k];
+        // A joint with clearance may stand open (a running fit); one drawn
+        // with an interference that touches nowhere carries nothing (its
+        // roughness may have eaten the interference).
+        if (f.diametral_interference > 0. && f.contact_length <= 0.)
+          failed.push_back(
+            "the joint " + f.name + " has lost contact over its whole length"
+            + (f.smoothing_loss > 0. ?
+                 " (U " + figure(f.diametral_interference, 6)
+                   + " mm, after the smoothing loss U_w "
+                   + figure(f.effective_interference, 6) + " mm)" :
+                 std::string()));
+        if (parameters.required_torque > 0.
+            && f.slip_safety < parameters.slip_safety)
+          failed.push_back("slip of the joint " + f.name
+                           + ": safety against slip "
+                           + below(f.slip_safety, parameters.slip_safety)
+                           + " (Design/Slip safety)");
+      }
+    for (const BodyFigures &f : bodies_out)
+      if (f.brittle)
+        {
+          if (f.tensile_strength > 0.
+              && f.fracture_safety < parameters.fracture_safety)
+            failed.push_back(
+              "fracture of the brittle " + f.name + ": safety against fracture "
+              + below(f.fracture_safety, parameters.fracture_safety)
+              + " (Design/Fracture safety)");
+        }
+      else if (f.yield_strength > 0.
+               && f.yield_safety < parameters.yield_safety)
+        failed.push_back("yield of the " + f.name + ": safety against yield "
+                         + below(f.yield_safety, parameters.yield_safety)
+                         + " (Design/Yield safety)");
+    return failed;
+  }
+} // namespace coaxfit

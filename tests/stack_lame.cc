@@ -47,7 +47,11 @@ namespace
         p.materials.push_back(m);
       }
     for (const double u : U)
-      p.fits.push_back({u, 0.});
+      {
+        coaxfit::JointFit fit;
+        fit.diametral_interference = fit.nominal_interference = u;
+        p.fits.push_back(fit);
+      }
     p.mesh.axial_cells        = 4;
     p.mesh.radial_cells       = 6;
     p.mesh.grading_ratio      = 1.;

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 using namespace coaxfit_test;
 
@@ -338,6 +339,24 @@ main()
     verdict(run_example("limit",
                         "--set 'Fit/Friction coefficient=0.1' --set "
                         "'Design/Required torque=1742.5'"));
+  }
+
+  std::cout << "Output/Write plots = false, Write report = false, Write "
+               "vtu = false:\n";
+  {
+    std::filesystem::remove_all("lean");
+    const RunResult r = run_coaxfit(
+      "lean",
+      "--set 'Output/Write plots=false' --set 'Output/Write report=false' "
+      "--set 'Output/Write vtu=false' "
+        + example);
+    std::cout << "  exit code " << r.exit_code << ", files:";
+    std::set<std::string> files;
+    for (const auto &entry : std::filesystem::directory_iterator("lean"))
+      files.insert(entry.path().filename().string());
+    for (const std::string &file : files)
+      std::cout << ' ' << file;
+    std::cout << '\n';
   }
 
   std::cout << "Coupling/Max steps = 2 (not converged: exit 2, the last "

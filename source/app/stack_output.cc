@@ -161,7 +161,7 @@ namespace coaxfit
         close_result_file(out, name);
       }
 
-    plots_note = write_plots(directory);
+    plots_note = parameters.write_plots ? write_plots(directory) : "";
 
     // summary.json, last.
     Json j;
@@ -239,6 +239,7 @@ namespace coaxfit
     out << j.dump(2) << '\n';
     close_result_file(out, name);
     // The report last: it lists the files written.
-    write_report(directory);
+    if (parameters.write_report)
+      write_report(directory);
   }
 } // namespace coaxfit

@@ -185,7 +185,9 @@ namespace coaxfit
              "")
        << (plots_note.rfind("plots skipped", 0) == 0 ?
              ", " + plots_note :
-             std::string(", plots.gp redraws the plots"))
+           files.count("plots.gp") > 0 ?
+             std::string(", plots.gp redraws the plots") :
+             std::string())
        << ", parameters.prm repeats the run).\n";
     close_result_file(md, name);
   }

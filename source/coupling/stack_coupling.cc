@@ -324,19 +324,23 @@ namespace coaxfit
         const double set_residual = std::max(step_set_gap, traction);
         if (parameters.unilateral
             && set_residual < std::max(parameters.tolerance, 1e-4))
-          for (unsigned int k = 0; k < joints.size(); ++k)
-            for (unsigned int i = 0; i < next[k].size(); ++i)
-              if (current.contact[k][i] && next[k][i] < 0.)
+          {
+            for (unsigned int k = 0; k < joints.size(); ++k)
+              for (unsigned int i = 0; i < next[k].size(); ++i)
                 {
-                  current.contact[k][i] = false;
-                  changed               = true;
+                  if (current.contact[k][i] && next[k][i] < 0.)
+                    {
+                      current.contact[k][i] = false;
+                      changed               = true;
+                    }
+                  else if (!current.contact[k][i]
+                           && du[k][i] < -1e-12 * displacement_scale)
+                    {
+                      current.contact[k][i] = true;
+                      changed               = true;
+                    }
                 }
-              else if (!current.contact[k][i]
-                       && du[k][i] < -1e-12 * displacement_scale)
-                {
-                  current.contact[k][i] = true;
-                  changed               = true;
-                }
+          }
         unsigned int n_contact = 0, n_points = 0;
         for (const auto &c : current.contact)
           {

@@ -1,8 +1,10 @@
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/base/interruption.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstring>
@@ -11,6 +13,7 @@
 #include <spawn.h>
 #include <sstream>
 #include <sys/wait.h>
+#include <thread>
 
 extern char **environ;
 
@@ -18,6 +21,9 @@ namespace coaxfit
 {
   namespace
   {
+    /** How long gnuplot may take for the plots of one run. */
+    constexpr std::chrono::seconds gnuplot_time_limit(120);
+
     /** The gnuplot script of the three plots, for the files of a run. */
     std::string
     plot_script(const RunResults &results)
@@ -152,10 +158,41 @@ namespace coaxfit
       return error == ENOENT ?
                "gnuplot not found (Debian package gnuplot-nox)" :
                std::string("cannot start gnuplot: ") + std::strerror(error);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0)
-      if (errno != EINTR)
-        return std::string("waiting for gnuplot: ") + std::strerror(errno);
+    // gnuplot ends with this process (an interrupted run passes its
+    // signal on) and within a time limit (a gnuplot that hangs is killed:
+    // the plots are skipped, the results are not held up).
+    {
+      std::lock_guard<std::mutex> lock(Interruption::mutex());
+      Interruption::add_child(pid);
+    }
+    const auto remove_child = [pid]() {
+      std::lock_guard<std::mutex> lock(Interruption::mutex());
+      Interruption::remove_child(pid);
+    };
+    const auto start  = std::chrono::steady_clock::now();
+    int        status = 0;
+    for (;;)
+      {
+        const pid_t done = ::waitpid(pid, &status, WNOHANG);
+        if (done == pid)
+          break;
+        if (done < 0 && errno != EINTR)
+          {
+            remove_child();
+            return std::string("waiting for gnuplot: ") + std::strerror(errno);
+          }
+        if (std::chrono::steady_clock::now() - start > gnuplot_time_limit)
+          {
+            ::kill(pid, SIGKILL);
+            while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+              ;
+            remove_child();
+            return "gnuplot did not finish within "
+                   + std::to_string(gnuplot_time_limit.count()) + " s";
+          }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      }
+    remove_child();
     if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXFSZ)
       throw ResourceError("drawing the plots with gnuplot failed: file size "
                           "limit reached (the earlier results are untouched)");

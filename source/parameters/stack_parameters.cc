@@ -421,8 +421,18 @@ namespace coaxfit
                       Patterns::Anything());
     prm.add_parameter("Write vtu",
                       write_vtu,
-                      "Write one VTU file per body and solution.pvd "
-                      "grouping them (for ParaView).");
+                      "Write one VTU file per body, an interface file "
+                      "per joint and solution.pvd grouping them (for "
+                      "ParaView).");
+    prm.add_parameter("Write plots",
+                      write_plots,
+                      "Draw contact_pressure.png (every joint) and "
+                      "convergence.png with gnuplot (skipped with a note "
+                      "when gnuplot is not installed).");
+    prm.add_parameter("Write report",
+                      write_report,
+                      "Write report.md: the verdict, the bodies, the joint "
+                      "table, the strength of the bodies.");
     prm.add_parameter("Print timing",
                       print_timing,
                       "Print the wall times at the end of the run (they "

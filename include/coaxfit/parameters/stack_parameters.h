@@ -120,6 +120,8 @@ namespace coaxfit
     bool             unilateral  = true;
     std::string      directory;
     bool             write_vtu    = true;
+    bool             write_plots  = true;
+    bool             write_report = true;
     bool             print_timing = true;
 
     std::string case_name = "default";

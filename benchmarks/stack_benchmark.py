@@ -59,7 +59,8 @@ def stack_prm(n):
                  % (names[k], names[k + 1], INTERFERENCES[k]))
     text += ("end\nsubsection Mesh\n  set Axial cells = 12\n  set Radial cells = 8\n"
              "  set Global refinements = 1\nend\n"
-             "subsection Output\n  set Write vtu = false\n  set Print timing = false\nend\n")
+             "subsection Output\n  set Write vtu = false\n  set Write plots = false\n"
+             "  set Write report = false\n  set Print timing = false\nend\n")
     return text, rings, INTERFERENCES[: n - 1]
 
 
@@ -160,7 +161,8 @@ def main():
     subprocess.run(["rm", "-rf", workdir])
     # The example of the issue.
     summary, wall = run(os.path.join(ROOT, "prm", "examples", "three_rings.prm"),
-                        ["Output/Write vtu=false", "Output/Print timing=false"])
+                        ["Output/Write vtu=false", "Output/Write plots=false",
+                         "Output/Write report=false", "Output/Print timing=false"])
     alone = max(j["alone"]["staggered_steps"] for j in summary["joints"])
     steps = summary["coupling"]["steps"]
     write_csv(os.path.join(ROOT, "benchmarks", "stack_benchmark.csv"), header, rows)

@@ -143,11 +143,23 @@ namespace coaxfit
         g.length                  = ring.half_length;
         g.contact_at_outer_radius = b + 1 < N;
         g.inner_joint             = b > 0 && b + 1 < N;
+        // The loads of operation: the body's thermal strain, the rotation,
+        // the pressure on the free bore of the innermost body and on the
+        // outside of the outermost.
+        const StackOperation &o = parameters.operation;
+        BodyLoad              load;
+        load.thermal_strain = parameters.materials[b].thermal_expansion
+                              * (o.temperature_of(b) - o.assembly_temperature);
+        load.omega_squared  = o.omega_squared();
+        load.inner_pressure = b == 0 ? o.bore_pressure : 0.;
+        load.outer_pressure = b + 1 == N ? o.outer_pressure : 0.;
         bodies.push_back(
           std::make_unique<BodyDiscretization>(parameters.bodies[b],
                                                g,
                                                parameters.materials[b],
-                                               parameters.mesh.degree));
+                                               parameters.mesh.degree,
+                                               false,
+                                               load));
         bodies.back()->set_mesh_builder(
           [ring](Triangulation<2> &t) { make_stack_ring_mesh(t, ring); });
         bodies.back()->setup_system();
@@ -185,6 +197,30 @@ namespace coaxfit
             joint.weights[i] = in.interface_weights()[at_in + i];
           }
         stack_joints.push_back(joint);
+      }
+
+    // Each body's own answer to its loads, and how far it moves the sides
+    // of each joint apart.
+    load_fields.clear();
+    if (has_loads())
+      {
+        const StackLayout           layout(stack_joints);
+        std::vector<Vector<double>> u_load;
+        for (unsigned int b = 0; b < N; ++b)
+          {
+            load_fields.push_back(solvers[b]->solve_load_field(
+              bodies[b]->assemble_load_vector(bodies[b]->load())));
+            u_load.push_back(
+              bodies[b]->interface_radial_values(load_fields.back()));
+          }
+        for (unsigned int k = 0; k + 1 < N; ++k)
+          {
+            StackJoint &joint = stack_joints[k];
+            joint.load_shift.reinit(joint.n_points());
+            for (unsigned int i = 0; i < joint.n_points(); ++i)
+              joint.load_shift[i] = u_load[k + 1][layout.offset(k + 1, k) + i]
+                                    - u_load[k][layout.offset(k, k) + i];
+          }
       }
 
     // Each joint's Winkler alpha k_o / (k_i + k_o) from the mean diagonal
@@ -330,151 +366,234 @@ namespace coaxfit
 
 
 
-  void
-  StackFit::postprocess()
+  std::vector<Vector<double>>
+  StackFit::body_fields(const StackState &state, const bool loaded) const
   {
-    const auto         start = std::chrono::steady_clock::now();
-    const unsigned int N     = bodies.size();
-    const StackLayout  layout(stack_joints);
-
-    // Each body's field under the forces of its joints.
-    fields.clear();
-    for (unsigned int b = 0; b < N; ++b)
+    const StackLayout           layout(stack_joints);
+    std::vector<Vector<double>> result;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         const unsigned int n = layout.n_points(b);
         Vector<double>     force(n);
         for (const unsigned int k : {b - 1, b})
           if (k < stack_joints.size())
             for (unsigned int i = 0; i < stack_joints[k].n_points(); ++i)
-              force[layout.offset(b, k) + i] = solution.force[k][i];
-        fields.push_back(solvers[b]->solve_field(std::vector<bool>(n, false),
+              force[layout.offset(b, k) + i] = state.force[k][i];
+        result.push_back(solvers[b]->solve_field(std::vector<bool>(n, false),
                                                  Vector<double>(n),
                                                  force));
+        if (loaded && !load_fields.empty())
+          result.back() += load_fields[b];
       }
+    return result;
+  }
 
-    // The plane-stress compound cylinders: the stack, and each joint alone.
+
+
+  JointFigures
+  StackFit::joint_state(const unsigned int                 k,
+                        const StackState                  &state,
+                        const std::vector<Vector<double>> &state_fields) const
+  {
+    const StackLayout layout(stack_joints);
+    const StackJoint &joint = stack_joints[k];
+    JointFigures      f{};
+    f.name                   = joint.name;
+    f.diameter               = parameters.joint_diameter(k);
+    f.diametral_interference = parameters.fits[k].nominal_interference;
+    f.smoothing_loss         = parameters.fits[k].smoothing_loss;
+    f.effective_interference = parameters.fits[k].diametral_interference;
+    const Vector<double> p   = state.pressure(stack_joints, k);
+    f.p_mid                  = p[0];
+    f.p_min                  = *std::min_element(p.begin(), p.end());
+    f.p_max                  = *std::max_element(p.begin(), p.end());
+    f.p_mean = state.force[k].mean_value() * state.force[k].size()
+               / (joint.weights.mean_value() * joint.weights.size());
+    f.separated_points
+      = std::count(state.contact[k].begin(), state.contact[k].end(), false);
+    f.closed = f.separated_points == 0;
+    // The length in contact: each stretch between neighbouring points
+    // counts whole if both touch, half if one does (whole model: twice
+    // the half model's).
+    double in_contact = 0.;
+    for (unsigned int i = 0; i + 1 < joint.n_points(); ++i)
+      in_contact += 0.5 * (state.contact[k][i] + state.contact[k][i + 1])
+                    * (joint.z[i + 1] - joint.z[i]);
+    f.contact_length = 2. * in_contact;
+    // The gap of each point from the bodies' own displacements (the loads'
+    // answers included).
+    const Vector<double> u_in
+      = bodies[k]->interface_radial_values(state_fields[k]);
+    const Vector<double> u_out
+      = bodies[k + 1]->interface_radial_values(state_fields[k + 1]);
+    f.gap_min = std::numeric_limits<double>::max();
+    f.gap_max = 0.;
+    for (unsigned int i = 0; i < joint.n_points(); ++i)
+      {
+        const double gap
+          = state.contact[k][i] ?
+              0. :
+              2.
+                * (u_out[layout.offset(k + 1, k) + i]
+                   - u_in[layout.offset(k, k) + i] - joint.interference);
+        f.gap_min = std::min(f.gap_min, gap);
+        f.gap_max = std::max(f.gap_max, gap);
+      }
+    f.friction_coefficient = parameters.fits[k].friction_coefficient;
+    // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l, in N m.
+    f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI * f.diameter
+                        * f.diameter * 2. * joint.z.back() / 2. / 1000.;
+    f.slip_safety = parameters.required_torque > 0. ?
+                      f.torque_capacity / parameters.required_torque :
+                      0.;
+    return f;
+  }
+
+
+
+  BodyFigures
+  StackFit::body_strength(const unsigned int    b,
+                          const Vector<double> &field) const
+  {
+    BodyFigures f;
+    f.name                = parameters.bodies[b];
+    f.von_mises_mid_plane = f.von_mises_max = 0.;
+    f.hoop_mid_plane = -std::numeric_limits<double>::infinity();
+    for (const double d : {parameters.rings[b].inner_diameter,
+                           parameters.rings[b].outer_diameter})
+      if (d > 0.)
+        for (const StressState &s :
+             stresses_along_radius(*bodies[b], field, d / 2.))
+          {
+            f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
+            if (s.z == 0.)
+              {
+                f.von_mises_mid_plane
+                  = std::max(f.von_mises_mid_plane, s.von_mises());
+                f.hoop_mid_plane = std::max(f.hoop_mid_plane, s.hoop());
+              }
+          }
+    f.brittle          = parameters.materials[b].kind == MaterialKind::brittle;
+    f.tensile_strength = parameters.materials[b].tensile_strength;
+    f.fracture_safety
+      = !f.brittle || f.tensile_strength <= 0. ? 0. :
+        f.hoop_mid_plane > 0. ? f.tensile_strength / f.hoop_mid_plane :
+                                std::numeric_limits<double>::infinity();
+    f.yield_strength = parameters.materials[b].yield_strength;
+    // A body without stress never yields: its safety is infinite.
+    f.yield_safety
+      = f.yield_strength <= 0. || f.brittle ? 0. :
+        f.von_mises_mid_plane > 0. ? f.yield_strength / f.von_mises_mid_plane :
+                                     std::numeric_limits<double>::infinity();
+    return f;
+  }
+
+
+
+  CompoundCylinders
+  StackFit::plane_stress(const unsigned int first,
+                         const unsigned int last) const
+  {
+    const StackOperation                &o = parameters.operation;
     std::vector<CompoundCylinders::Ring> rings;
-    std::vector<double>                  U;
-    for (unsigned int b = 0; b < N; ++b)
+    for (unsigned int b = first; b <= last; ++b)
       rings.push_back({parameters.rings[b].inner_diameter,
                        parameters.rings[b].outer_diameter,
                        parameters.materials[b].E,
                        parameters.materials[b].nu});
-    for (unsigned int k = 0; k + 1 < N; ++k)
-      U.push_back(parameters.fits[k].diametral_interference);
+    // The loads: each joint's interference less the free rings' growth
+    // apart (rho in kg/m^3: rho omega^2 is 1e-12 rho omega^2 MPa/mm^2).
+    const auto free_growth = [&](const unsigned int b, const double r) {
+      return free_ring_displacement(
+        rings[b - first],
+        r,
+        parameters.materials[b].thermal_expansion
+          * (o.temperature_of(b) - o.assembly_temperature),
+        1e-12 * parameters.materials[b].density * o.omega_squared());
+    };
+    std::vector<double> U;
+    for (unsigned int k = first; k < last; ++k)
+      {
+        const double R = parameters.joint_diameter(k) / 2.;
+        U.push_back(parameters.fits[k].diametral_interference
+                    - (has_loads() ?
+                         2. * (free_growth(k + 1, R) - free_growth(k, R)) :
+                         0.));
+      }
     // With bilateral joints (Contact/Unilateral = false) every joint of
     // the closed form stays closed too.
-    const CompoundCylinders lame(rings, U, 0., 0., parameters.unilateral);
+    return CompoundCylinders(rings,
+                             U,
+                             first == 0 ? o.bore_pressure : 0.,
+                             last + 1 == bodies.size() ? o.outer_pressure : 0.,
+                             parameters.unilateral);
+  }
+
+
+
+  void
+  StackFit::postprocess()
+  {
+    const auto         start = std::chrono::steady_clock::now();
+    const unsigned int N     = bodies.size();
+
+    // Each body's field under the forces of its joints and its loads.
+    fields = body_fields(solution, true);
+
+    // The plane-stress compound cylinders: the stack, and each joint alone.
+    const CompoundCylinders lame = plane_stress(0, N - 1);
 
     alone.clear();
     joints_out.clear();
     for (unsigned int k = 0; k + 1 < N; ++k)
       {
         const StackJoint &joint = stack_joints[k];
-        JointFigures      f;
-        f.name                   = joint.name;
-        f.diameter               = parameters.joint_diameter(k);
-        f.diametral_interference = parameters.fits[k].nominal_interference;
-        f.smoothing_loss         = parameters.fits[k].smoothing_loss;
-        f.effective_interference = parameters.fits[k].diametral_interference;
-        const Vector<double> p   = solution.pressure(stack_joints, k);
-        f.p_mid                  = p[0];
-        f.p_min                  = *std::min_element(p.begin(), p.end());
-        f.p_max                  = *std::max_element(p.begin(), p.end());
-        f.p_mean = solution.force[k].mean_value() * solution.force[k].size()
-                   / (joint.weights.mean_value() * joint.weights.size());
-        f.separated_points = std::count(solution.contact[k].begin(),
-                                        solution.contact[k].end(),
-                                        false);
-        f.closed           = f.separated_points == 0;
-        // The length in contact: each stretch between neighbouring points
-        // counts whole if both touch, half if one does (whole model: twice
-        // the half model's).
-        double in_contact = 0.;
-        for (unsigned int i = 0; i + 1 < joint.n_points(); ++i)
-          in_contact += 0.5
-                        * (solution.contact[k][i] + solution.contact[k][i + 1])
-                        * (joint.z[i + 1] - joint.z[i]);
-        f.contact_length = 2. * in_contact;
-        // The gap of each point from the bodies' own displacements.
-        const Vector<double> u_in
-          = bodies[k]->interface_radial_values(fields[k]);
-        const Vector<double> u_out
-          = bodies[k + 1]->interface_radial_values(fields[k + 1]);
-        f.gap_min = std::numeric_limits<double>::max();
-        f.gap_max = 0.;
-        for (unsigned int i = 0; i < joint.n_points(); ++i)
-          {
-            const double gap
-              = solution.contact[k][i] ?
-                  0. :
-                  2.
-                    * (u_out[layout.offset(k + 1, k) + i]
-                       - u_in[layout.offset(k, k) + i] - joint.interference);
-            f.gap_min = std::min(f.gap_min, gap);
-            f.gap_max = std::max(f.gap_max, gap);
-          }
-
+        JointFigures      f     = joint_state(k, solution, fields);
         alone.push_back(joint_alone(k, f.alone_steps));
         const Vector<double> pa = alone.back().pressure({joint}, 0);
         f.alone_p_mid           = pa[0];
         f.alone_p_mean          = alone.back().force[0].mean_value() * pa.size()
                          / (joint.weights.mean_value() * joint.weights.size());
         f.lame_p       = lame.pressure(k);
-        f.lame_alone_p = CompoundCylinders({rings[k], rings[k + 1]},
-                                           {U[k]},
-                                           0.,
-                                           0.,
-                                           parameters.unilateral)
-                           .pressure(0);
-        f.friction_coefficient = parameters.fits[k].friction_coefficient;
-        // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l,
-        // in N m.
-        f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI
-                            * f.diameter * f.diameter * 2. * joint.z.back() / 2.
-                            / 1000.;
-        f.slip_safety = parameters.required_torque > 0. ?
-                          f.torque_capacity / parameters.required_torque :
-                          0.;
+        f.lame_alone_p = plane_stress(k, k + 1).pressure(0);
         joints_out.push_back(f);
       }
     // Each body's strength: von Mises on its surfaces.
     bodies_out.clear();
     for (unsigned int b = 0; b < N; ++b)
+      bodies_out.push_back(body_strength(b, fields[b]));
+
+    // With loads, the state of assembly as well: the contact of the
+    // unloaded bodies (the same discrete problem, solved directly), each
+    // body's stresses without its thermal strain.
+    joints_assembly.clear();
+    bodies_assembly.clear();
+    assembly_solution = StackState();
+    if (has_loads())
       {
-        BodyFigures f;
-        f.name                = parameters.bodies[b];
-        f.von_mises_mid_plane = f.von_mises_max = 0.;
-        f.hoop_mid_plane = -std::numeric_limits<double>::infinity();
-        for (const double d : {parameters.rings[b].inner_diameter,
-                               parameters.rings[b].outer_diameter})
-          if (d > 0.)
-            for (const StressState &s :
-                 stresses_along_radius(*bodies[b], fields[b], d / 2.))
-              {
-                f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
-                if (s.z == 0.)
-                  {
-                    f.von_mises_mid_plane
-                      = std::max(f.von_mises_mid_plane, s.von_mises());
-                    f.hoop_mid_plane = std::max(f.hoop_mid_plane, s.hoop());
-                  }
-              }
-        f.brittle = parameters.materials[b].kind == MaterialKind::brittle;
-        f.tensile_strength = parameters.materials[b].tensile_strength;
-        f.fracture_safety
-          = !f.brittle || f.tensile_strength <= 0. ? 0. :
-            f.hoop_mid_plane > 0. ? f.tensile_strength / f.hoop_mid_plane :
-                                    std::numeric_limits<double>::infinity();
-        f.yield_strength = parameters.materials[b].yield_strength;
-        // A body without stress never yields: its safety is infinite.
-        f.yield_safety = f.yield_strength <= 0. || f.brittle ?
-                           0. :
-                         f.von_mises_mid_plane > 0. ?
-                           f.yield_strength / f.von_mises_mid_plane :
-                           std::numeric_limits<double>::infinity();
-        bodies_out.push_back(f);
+        std::vector<StackJoint> unloaded = stack_joints;
+        for (StackJoint &joint : unloaded)
+          joint.load_shift.reinit(0);
+        std::vector<FullMatrix<double>> C;
+        for (const auto &c : condensed)
+          C.push_back(c->get_compliance());
+        unsigned int set_steps = 0;
+        assembly_solution
+          = solve_stack_contact(C, unloaded, parameters.unilateral, set_steps);
+        const std::vector<Vector<double>> assembled
+          = body_fields(assembly_solution, false);
+        for (unsigned int k = 0; k + 1 < N; ++k)
+          joints_assembly.push_back(
+            joint_state(k, assembly_solution, assembled));
+        for (unsigned int b = 0; b < N; ++b)
+          {
+            const BodyLoad load = bodies[b]->load();
+            bodies[b]->set_load(BodyLoad());
+            bodies_assembly.push_back(body_strength(b, assembled[b]));
+            bodies[b]->set_load(load);
+          }
       }
+
     surfaces_out.clear();
     for (const std::string &name : parameters.report_surfaces)
       surfaces_out.push_back(surface(name));
@@ -539,6 +658,9 @@ namespace coaxfit
                   + number(parameters.fits[k].diametral_interference) + " mm" :
                 std::string())
           << '\n';
+    if (has_loads())
+      out << "  loads of operation: "
+          << parameters.operation.describe(parameters.bodies) << '\n';
     const bool ok = solve(progress ? &out : nullptr);
     if (!ok)
       {
@@ -571,6 +693,24 @@ namespace coaxfit
     std::size_t width = 5;
     for (const JointFigures &f : joints_out)
       width = std::max(width, f.name.size());
+    if (has_loads())
+      {
+        // The state of assembly first, then the service state.
+        out << "\n  in the state of assembly (no loads of operation)\n  "
+            << std::left << std::setw(width) << "joint" << std::right
+            << "   D mm   p(0) MPa  mean MPa   min MPa   max MPa  contact\n";
+        for (const JointFigures &f : joints_assembly)
+          out << "  " << std::left << std::setw(width) << f.name << std::right
+              << std::fixed << std::setprecision(1) << std::setw(7)
+              << f.diameter << std::setprecision(4) << std::setw(11) << f.p_mid
+              << std::setw(10) << f.p_mean << std::setw(10) << f.p_min
+              << std::setw(10) << f.p_max << "  "
+              << (f.closed ? "closed" :
+                             std::to_string(f.separated_points) + " open")
+              << '\n'
+              << std::defaultfloat;
+        out << "\n  in operation (the loads above)";
+      }
     out << "\n  " << std::left << std::setw(width) << "joint" << std::right
         << "   D mm   p(0) MPa  mean MPa   min MPa   max MPa  contact   | "
            "alone: mean | plane stress: stack   alone\n";
@@ -602,6 +742,15 @@ namespace coaxfit
             out << ", safety against slip " << f.slip_safety << " at "
                 << parameters.required_torque << " N m"
                 << (f.slip_safety < 1. ? ": SLIPS" : "");
+          if (has_loads())
+            {
+              const JointFigures &a = joints_assembly[&f - &joints_out[0]];
+              out << "; in the state of assembly " << a.torque_capacity
+                  << " N m";
+              if (parameters.required_torque > 0.)
+                out << ", safety " << a.slip_safety
+                    << (a.slip_safety < 1. ? ": SLIPS" : "");
+            }
           out << '\n';
         }
     for (const BodyFigures &f : bodies_out)
@@ -633,6 +782,16 @@ namespace coaxfit
             else
               out << f.fracture_safety;
             out << " (R_m " << f.tensile_strength << " MPa)";
+          }
+        if (has_loads())
+          {
+            const BodyFigures &a = bodies_assembly[&f - &bodies_out[0]];
+            out << "; in the state of assembly " << a.von_mises_mid_plane
+                << " MPa";
+            if (a.yield_strength > 0. && !a.brittle)
+              out << ", safety against yield " << a.yield_safety;
+            if (a.brittle && a.tensile_strength > 0.)
+              out << ", safety against fracture " << a.fracture_safety;
           }
         out << '\n';
       }

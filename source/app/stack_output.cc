@@ -20,6 +20,16 @@ namespace coaxfit
       return std::isfinite(x) ? Json(x) : Json(nullptr);
     }
 
+    /** The pressures of a joint (MPa). */
+    Json
+    pressure_json(const JointFigures &f)
+    {
+      return {{"at_mid_plane", number_or_null(f.p_mid)},
+              {"mean", number_or_null(f.p_mean)},
+              {"min", number_or_null(f.p_min)},
+              {"max", number_or_null(f.p_max)}};
+    }
+
     /**
      * The figures of a joint; its safety against slip with @p slip (a
      * required torque given).
@@ -33,10 +43,7 @@ namespace coaxfit
       j["diametral_interference"] = f.diametral_interference;
       j["smoothing_loss"]         = f.smoothing_loss;
       j["effective_interference"] = f.effective_interference;
-      j["pressure"]               = {{"at_mid_plane", number_or_null(f.p_mid)},
-                                     {"mean", number_or_null(f.p_mean)},
-                                     {"min", number_or_null(f.p_min)},
-                                     {"max", number_or_null(f.p_max)}};
+      j["pressure"]               = pressure_json(f);
       j["contact"]                = {{"closed", f.closed},
                                      {"length", f.contact_length},
                                      {"separated_points", f.separated_points},
@@ -84,11 +91,24 @@ namespace coaxfit
         check_values_for_output(p, "contact_pressure_" + joint.name + ".csv");
         const std::string name
           = directory + "/contact_pressure_" + joint.name + ".csv";
+        // With loads of operation the state of assembly follows (the
+        // other columns are the service state).
+        const Vector<double> p_assembly
+          = has_loads() ? assembly_solution.pressure(stack_joints, k) :
+                          Vector<double>();
         std::ofstream out = open_result_file(name);
-        out << "z_mm,pressure_MPa,contact,pressure_alone_MPa\n";
+        out << "z_mm,pressure_MPa,contact,pressure_alone_MPa"
+            << (has_loads() ? ",pressure_assembly_MPa,contact_assembly" : "")
+            << '\n';
         for (unsigned int i = 0; i < joint.n_points(); ++i)
-          out << joint.z[i] << ',' << p[i] << ','
-              << (solution.contact[k][i] ? 1 : 0) << ',' << pa[i] << '\n';
+          {
+            out << joint.z[i] << ',' << p[i] << ','
+                << (solution.contact[k][i] ? 1 : 0) << ',' << pa[i];
+            if (has_loads())
+              out << ',' << p_assembly[i] << ','
+                  << (assembly_solution.contact[k][i] ? 1 : 0);
+            out << '\n';
+          }
         close_result_file(out, name);
       }
 
@@ -188,12 +208,42 @@ namespace coaxfit
       }
     else
       method["active_set_steps"] = active_set_steps;
-    j["coupling"]    = method;
+    j["coupling"] = method;
+    // The loads of operation: the joints' and bodies' figures are of the
+    // service state, each with its state of assembly under "assembly".
+    const StackOperation &o = parameters.operation;
+    Json                  temperatures;
+    for (unsigned int b = 0; b < N; ++b)
+      temperatures[parameters.bodies[b]] = o.temperature_of(b);
+    j["operation"]   = {{"loads", has_loads()},
+                        {"conditions", o.describe(parameters.bodies)},
+                        {"assembly_temperature", o.assembly_temperature},
+                        {"temperature", temperatures},
+                        {"speed", o.speed},
+                        {"bore_pressure", o.bore_pressure},
+                        {"outer_pressure", o.outer_pressure}};
     Json joints_json = Json::array();
     for (const JointFigures &f : joints_out)
       {
+        const unsigned int k = &f - &joints_out[0];
         joints_json.push_back(joint_json(f, parameters.required_torque > 0.));
-        joints_json.back()["fit"] = parameters.fits[&f - &joints_out[0]].source;
+        joints_json.back()["fit"] = parameters.fits[k].source;
+        if (has_loads())
+          {
+            const JointFigures &a = joints_assembly[k];
+            Json                assembly;
+            assembly["pressure"] = pressure_json(a);
+            assembly["contact"]  = {{"closed", a.closed},
+                                    {"length", a.contact_length},
+                                    {"separated_points", a.separated_points}};
+            if (a.friction_coefficient > 0.)
+              {
+                assembly["torque_capacity"] = number_or_null(a.torque_capacity);
+                if (parameters.required_torque > 0.)
+                  assembly["slip_safety"] = a.slip_safety;
+              }
+            joints_json.back()["assembly"] = assembly;
+          }
       }
     j["joints"]      = joints_json;
     Json bodies_json = Json::array();
@@ -213,6 +263,19 @@ namespace coaxfit
           {
             b["tensile_strength"] = f.tensile_strength;
             b["fracture_safety"]  = number_or_null(f.fracture_safety);
+          }
+        if (has_loads())
+          {
+            const BodyFigures &a = bodies_assembly[&f - &bodies_out[0]];
+            b["assembly"]
+              = {{"von_mises_mid_plane", a.von_mises_mid_plane},
+                 {"von_mises_max", a.von_mises_max},
+                 {"hoop_mid_plane", number_or_null(a.hoop_mid_plane)}};
+            if (a.yield_strength > 0. && !a.brittle)
+              b["assembly"]["yield_safety"] = number_or_null(a.yield_safety);
+            if (a.brittle && a.tensile_strength > 0.)
+              b["assembly"]["fracture_safety"]
+                = number_or_null(a.fracture_safety);
           }
         bodies_json.push_back(b);
       }

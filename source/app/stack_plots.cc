@@ -18,6 +18,8 @@ namespace coaxfit
     for (const JointFigures &f : joints_out)
       p_top
         = std::max({p_top, f.p_mean, f.alone_p_mean, f.lame_p, f.lame_alone_p});
+    for (const JointFigures &f : joints_assembly)
+      p_top = std::max(p_top, f.p_mean);
     p_top          = p_top > 0. ? 1.6 * p_top : 1.;
     bool separated = false;
     for (const JointFigures &f : joints_out)
@@ -30,9 +32,14 @@ namespace coaxfit
        << "set terminal pngcairo size 960,600 font ',11'\n"
        << "set datafile separator ','\nset grid\n"
        << "\nset output 'contact_pressure.png'\n"
-       << "set title 'Contact pressure of each joint: in the assembly "
-          "(points), alone with the other bodies removed (dashed), "
-          "plane-stress estimates (dotted)' font ',10'\n"
+       << (has_loads() ?
+             "set title 'Contact pressure of each joint in operation: in "
+             "the assembly (points), alone (dashed), plane-stress "
+             "estimates (dotted); at assembly, no loads (dash-dot)' font "
+             "',10'\n" :
+             "set title 'Contact pressure of each joint: in the assembly "
+             "(points), alone with the other bodies removed (dashed), "
+             "plane-stress estimates (dotted)' font ',10'\n")
        << "set xlabel 'z (mm), from the mid-plane'\n"
        << "set ylabel 'contact pressure (MPa)'\nset key outside bottom "
           "center horizontal\n"
@@ -49,6 +56,9 @@ namespace coaxfit
            << " title '" << f.name << " alone', \\\n     " << f.lame_p
            << " with lines dt 3 lw 1" << line << " notitle, \\\n     "
            << f.lame_alone_p << " with lines dt 3 lw 1" << line << " notitle";
+        if (has_loads())
+          gp << ", \\\n     " << csv << " skip 1 using 1:5 with lines dt 4 lw 1"
+             << line << " title '" << f.name << " at assembly'";
       }
     if (separated)
       for (unsigned int k = 0; k < joints_out.size(); ++k)

@@ -26,6 +26,20 @@ namespace coaxfit
              std::isinf(x) ? std::string("infinite") :
                              design_figure(x);
     }
+
+    /**
+     * A joint's torque capacity and safety against slip as two cells of a
+     * table (`-` without a friction coefficient or @p required_torque).
+     */
+    std::string
+    slip_cells(const JointFigures &f, const double required_torque)
+    {
+      return (f.friction_coefficient > 0. ? design_figure(f.torque_capacity) :
+                                            std::string("-"))
+             + " | "
+             + (required_torque > 0. ? safety(f.slip_safety) :
+                                       std::string("-"));
+    }
   } // namespace
 
 
@@ -59,6 +73,36 @@ namespace coaxfit
        << " (Design/Fracture safety); a body without its strength is not "
           "judged.\n\n";
 
+    if (has_loads())
+      {
+        md << "## Loads of operation\n\n"
+           << p.operation.describe(p.bodies)
+           << ". The tables below are of the service state; the state of "
+              "assembly (no loads, at the assembly temperature "
+           << design_figure(p.operation.assembly_temperature)
+           << " C) is here, and the verdict judges both.\n\n"
+              "| joint | p(0) MPa | mean MPa | min MPa | max MPa | contact | "
+              "torque capacity N m | safety against slip |\n"
+              "|---|---|---|---|---|---|---|---|\n";
+        for (const JointFigures &f : joints_assembly)
+          md << "| " << f.name << " | " << design_figure(f.p_mid) << " | "
+             << design_figure(f.p_mean) << " | " << design_figure(f.p_min)
+             << " | " << design_figure(f.p_max) << " | "
+             << (f.closed ? std::string("closed") :
+                            std::to_string(f.separated_points) + " points open")
+             << " | " << slip_cells(f, p.required_torque) << " |\n";
+        md << "\n| body | von Mises, mid-plane MPa | hoop, mid-plane MPa | "
+              "safety against yield | safety against fracture |\n"
+              "|---|---|---|---|---|\n";
+        for (const BodyFigures &f : bodies_assembly)
+          md << "| " << f.name << " | " << design_figure(f.von_mises_mid_plane)
+             << " | " << design_figure(f.hoop_mid_plane) << " | "
+             << (f.brittle ? std::string("- (brittle)") :
+                             safety(f.yield_safety))
+             << " | " << safety(f.fracture_safety) << " |\n";
+        md << '\n';
+      }
+
     md << "## Bodies\n\n| body | bore D_i mm | outer D_a mm | length mm | "
           "material | E MPa | nu | R_e | R_m | kind |\n"
           "|---|---|---|---|---|---|---|---|---|---|\n";
@@ -77,7 +121,8 @@ namespace coaxfit
            << " |\n";
       }
 
-    md << "\n## Joints\n\nPressures in MPa: in the assembly (at the "
+    md << "\n## Joints" << (has_loads() ? " in operation" : "")
+       << "\n\nPressures in MPa: in the assembly (at the "
           "mid-plane, mean over the joint, least and largest nodal value), "
           "alone (the joint's two bodies with the others removed, the same "
           "meshes) and the plane-stress compound-cylinder estimates "
@@ -118,14 +163,7 @@ namespace coaxfit
              << (f.friction_coefficient > 0. ?
                    design_figure(f.friction_coefficient) :
                    std::string("not given"))
-             << " | "
-             << (f.friction_coefficient > 0. ?
-                   design_figure(f.torque_capacity) :
-                   std::string("-"))
-             << " | "
-             << (p.required_torque > 0. ? safety(f.slip_safety) :
-                                          std::string("-"))
-             << " |\n";
+             << " | " << slip_cells(f, p.required_torque) << " |\n";
         if (p.required_torque > 0.)
           md << "\nThe required torque " << design_figure(p.required_torque)
              << " N m passes through every joint (Design/Required "

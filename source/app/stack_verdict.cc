@@ -39,42 +39,64 @@ namespace coaxfit
     std::vector<std::string> failed;
     if (!converged)
       failed.push_back("the coupling did not converge");
-    for (unsigned int k = 0; k < joints_out.size(); ++k)
+    // Without loads the one state is that of assembly; with loads both
+    // states are judged (a torque passes at rest as in service; heat or
+    // rotation may loosen a joint or load a body more).
+    struct Judged
+    {
+      const std::vector<JointFigures> &joints;
+      const std::vector<BodyFigures>  &bodies;
+      std::string                      when;
+    };
+    std::vector<Judged> states = {{joints_out, bodies_out, ""}};
+    if (has_loads())
       {
-        const JointFigures &f = joints_out[k];
-        // A joint with clearance may stand open (a running fit); one drawn
-        // with an interference that touches nowhere carries nothing (its
-        // roughness may have eaten the interference).
-        if (f.diametral_interference > 0. && f.contact_length <= 0.)
-          failed.push_back(
-            "the joint " + f.name + " has lost contact over its whole length"
-            + (f.smoothing_loss > 0. ?
-                 " (U " + figure(f.diametral_interference, 6)
-                   + " mm, after the smoothing loss U_w "
-                   + figure(f.effective_interference, 6) + " mm)" :
-                 std::string()));
-        if (parameters.required_torque > 0.
-            && f.slip_safety < parameters.slip_safety)
-          failed.push_back("slip of the joint " + f.name
-                           + ": safety against slip "
-                           + below(f.slip_safety, parameters.slip_safety)
-                           + " (Design/Slip safety)");
+        states[0].when = " in operation";
+        states.push_back(
+          {joints_assembly, bodies_assembly, " in the state of assembly"});
       }
-    for (const BodyFigures &f : bodies_out)
-      if (f.brittle)
-        {
-          if (f.tensile_strength > 0.
-              && f.fracture_safety < parameters.fracture_safety)
-            failed.push_back(
-              "fracture of the brittle " + f.name + ": safety against fracture "
-              + below(f.fracture_safety, parameters.fracture_safety)
-              + " (Design/Fracture safety)");
-        }
-      else if (f.yield_strength > 0.
-               && f.yield_safety < parameters.yield_safety)
-        failed.push_back("yield of the " + f.name + ": safety against yield "
-                         + below(f.yield_safety, parameters.yield_safety)
-                         + " (Design/Yield safety)");
+    for (const Judged &state : states)
+      {
+        for (const JointFigures &f : state.joints)
+          {
+            // A joint with clearance may stand open (a running fit); one
+            // drawn with an interference that touches nowhere carries
+            // nothing (its roughness, heat or rotation may have eaten the
+            // interference).
+            if (f.diametral_interference > 0. && f.contact_length <= 0.)
+              failed.push_back(
+                "the joint " + f.name + " has lost contact over its whole "
+                + "length" + state.when
+                + (f.smoothing_loss > 0. ?
+                     " (U " + figure(f.diametral_interference, 6)
+                       + " mm, after the smoothing loss U_w "
+                       + figure(f.effective_interference, 6) + " mm)" :
+                     std::string()));
+            if (parameters.required_torque > 0.
+                && f.slip_safety < parameters.slip_safety)
+              failed.push_back("slip of the joint " + f.name + state.when
+                               + ": safety against slip "
+                               + below(f.slip_safety, parameters.slip_safety)
+                               + " (Design/Slip safety)");
+          }
+        for (const BodyFigures &f : state.bodies)
+          if (f.brittle)
+            {
+              if (f.tensile_strength > 0.
+                  && f.fracture_safety < parameters.fracture_safety)
+                failed.push_back(
+                  "fracture of the brittle " + f.name + state.when
+                  + ": safety against fracture "
+                  + below(f.fracture_safety, parameters.fracture_safety)
+                  + " (Design/Fracture safety)");
+            }
+          else if (f.yield_strength > 0.
+                   && f.yield_safety < parameters.yield_safety)
+            failed.push_back("yield of the " + f.name + state.when
+                             + ": safety against yield "
+                             + below(f.yield_safety, parameters.yield_safety)
+                             + " (Design/Yield safety)");
+      }
     return failed;
   }
 } // namespace coaxfit

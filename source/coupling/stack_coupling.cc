@@ -106,7 +106,7 @@ namespace coaxfit
     for (const StackJoint &joint : joints)
       {
         displacement_scale
-          = std::max(displacement_scale, std::abs(joint.interference));
+          = std::max(displacement_scale, joint.largest_interference());
         current.force.emplace_back(joint.n_points());
         current.contact.emplace_back(joint.n_points(), true);
       }
@@ -141,7 +141,7 @@ namespace coaxfit
             {
               prescribed[at + i] = true;
               displacement[at + i]
-                = target[k][i] + (outer ? joints[k].interference : 0.);
+                = target[k][i] + (outer ? joints[k].interference_at(i) : 0.);
             }
           else if (data[k] == Data::force)
             force[at + i] = current.force[k][i];
@@ -179,7 +179,7 @@ namespace coaxfit
     Vector<double> target(joint.n_points());
     for (unsigned int i = 0; i < joint.n_points(); ++i)
       {
-        du[i]     = u_outer[i] - u_inner[i] - joint.interference;
+        du[i]     = u_outer[i] - u_inner[i] - joint.interference_at(i);
         target[i] = u_inner[i] + (1. - alpha[k]) * du[i];
       }
     return target;
@@ -411,14 +411,14 @@ namespace coaxfit
           }
     for (unsigned int k = 0; k < N; ++k)
       for (unsigned int i = 0; i < joints[k].n_points(); ++i)
-        d[start[k] + i] = joints[k].interference;
+        d[start[k] + i] = joints[k].interference_at(i);
 
     std::vector<bool> contact(n, true);
     Vector<double>    F(n);
     const double      scale = [&]() {
       double s = 0.;
       for (const StackJoint &j : joints)
-        s = std::max(s, std::abs(j.interference));
+        s = std::max(s, j.largest_interference());
       return s > 0. ? s : 1.;
     }();
     for (active_set_steps = 1; active_set_steps <= 4 * n + 10;

@@ -184,4 +184,21 @@ namespace coaxfit
            * ((1. + nu) * A[i]
               + (B[i] == 0. ? 0. : (1. - nu) * B[i] / (r * r)));
   }
+
+
+  double
+  free_ring_displacement(const CompoundCylinders::Ring &ring,
+                         const double                   r,
+                         const double                   thermal_strain,
+                         const double                   rho_omega_squared)
+  {
+    const double a = ring.inner_diameter / 2., b = ring.outer_diameter / 2.;
+    const double nu = ring.nu, q = rho_omega_squared;
+    const double sigma_r
+      = (3. + nu) / 8. * q * (a * a + b * b - a * a * b * b / (r * r) - r * r);
+    const double sigma_t
+      = (3. + nu) / 8. * q * (a * a + b * b + a * a * b * b / (r * r))
+        - (1. + 3. * nu) / 8. * q * r * r;
+    return thermal_strain * r + r / ring.E * (sigma_t - nu * sigma_r);
+  }
 } // namespace coaxfit

@@ -1,5 +1,6 @@
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/scene_parameters.h>
+#include <coaxfit/parameters/temperature_entry.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -9,9 +10,6 @@ namespace coaxfit
 {
   namespace
   {
-    /** Absolute zero in degrees C, and the hottest temperature allowed. */
-    constexpr double absolute_zero = -273.15, hottest = 1000.;
-
     /**
      * The number in @p text, or NaN if @p text is not one number (an empty
      * text is not a number either).
@@ -28,31 +26,34 @@ namespace coaxfit
         ++end;
       return *end == '\0' ? value : std::nan("");
     }
-
-    /** A temperature entry: empty is the assembly temperature. */
-    double
-    temperature(const std::string &text, const double assembly)
-    {
-      const auto first = text.find_first_not_of(" \t");
-      return first == std::string::npos ? assembly : parse_number(text);
-    }
-
-    void
-    check_temperature(const double       value,
-                      const std::string &text,
-                      const std::string &name)
-    {
-      if (std::isnan(value))
-        throw InputError("parameter " + name + " = '" + text
-                         + "' is not a temperature: allowed is empty (the "
-                           "assembly temperature) or a number of degrees C "
-                           "above -273.15 and at most 1000.");
-      require(value > absolute_zero && value <= hottest,
-              name,
-              value,
-              "-273.15 < T <= 1000 degrees C");
-    }
   } // namespace
+
+
+
+  double
+  temperature_entry(const std::string &text, const double assembly)
+  {
+    const auto first = text.find_first_not_of(" \t");
+    return first == std::string::npos ? assembly : parse_number(text);
+  }
+
+
+
+  void
+  check_temperature_entry(const double       value,
+                          const std::string &text,
+                          const std::string &name)
+  {
+    if (std::isnan(value))
+      throw InputError("parameter " + name + " = '" + text
+                       + "' is not a temperature: allowed is empty (the "
+                         "assembly temperature) or a number of degrees C "
+                         "above -273.15 and at most 1000.");
+    require(value > absolute_zero && value <= hottest_temperature,
+            name,
+            value,
+            "-273.15 < T <= 1000 degrees C");
+  }
 
 
 
@@ -66,7 +67,7 @@ namespace coaxfit
                       "joined and at which the interference is measured "
                       "(the state of assembly). Allowed: -273.15 < T <= "
                       "1000.",
-                      Patterns::Double(absolute_zero, hottest));
+                      Patterns::Double(absolute_zero, hottest_temperature));
     prm.add_parameter("Shaft temperature",
                       shaft_temperature_text,
                       "Uniform temperature of the shaft in operation, in "
@@ -132,7 +133,7 @@ namespace coaxfit
   double
   OperationParameters::shaft_temperature() const
   {
-    return temperature(shaft_temperature_text, assembly_temperature);
+    return temperature_entry(shaft_temperature_text, assembly_temperature);
   }
 
 
@@ -140,7 +141,7 @@ namespace coaxfit
   double
   OperationParameters::hub_temperature() const
   {
-    return temperature(hub_temperature_text, assembly_temperature);
+    return temperature_entry(hub_temperature_text, assembly_temperature);
   }
 
 
@@ -220,12 +221,12 @@ namespace coaxfit
   OperationParameters::validate(const double joint_diameter,
                                 const bool   solid_shaft) const
   {
-    check_temperature(shaft_temperature(),
-                      shaft_temperature_text,
-                      "Operation/Shaft temperature");
-    check_temperature(hub_temperature(),
-                      hub_temperature_text,
-                      "Operation/Hub temperature");
+    check_temperature_entry(shaft_temperature(),
+                            shaft_temperature_text,
+                            "Operation/Shaft temperature");
+    check_temperature_entry(hub_temperature(),
+                            hub_temperature_text,
+                            "Operation/Hub temperature");
     const double clearance = joining_clearance(joint_diameter);
     if (std::isnan(clearance))
       throw InputError("parameter Operation/Joining clearance = '"

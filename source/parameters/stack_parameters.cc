@@ -4,6 +4,7 @@
 #include <coaxfit/parameters/parameter_file.h>
 #include <coaxfit/parameters/parameter_reading.h>
 #include <coaxfit/parameters/stack_parameters.h>
+#include <coaxfit/parameters/temperature_entry.h>
 
 #include <algorithm>
 #include <cctype>
@@ -234,6 +235,45 @@ namespace coaxfit
 
 
 
+  bool
+  StackOperation::has_loads() const
+  {
+    for (const double T : temperature)
+      if (T != assembly_temperature)
+        return true;
+    return speed > 0. || bore_pressure > 0. || outer_pressure > 0.;
+  }
+
+
+
+  std::string
+  StackOperation::describe(const std::vector<std::string> &bodies) const
+  {
+    std::vector<std::string> parts;
+    std::string              heated;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (temperature_of(b) != assembly_temperature)
+        heated += (heated.empty() ? "" : ", ") + bodies[b] + " "
+                  + number(temperature_of(b)) + " C";
+    if (!heated.empty())
+      parts.push_back(heated + " (assembly " + number(assembly_temperature)
+                      + " C)");
+    if (speed > 0.)
+      parts.push_back(number(speed) + " 1/min");
+    if (bore_pressure > 0.)
+      parts.push_back(bodies.front() + " bore pressure " + number(bore_pressure)
+                      + " MPa");
+    if (outer_pressure > 0.)
+      parts.push_back(bodies.back() + " outer pressure "
+                      + number(outer_pressure) + " MPa");
+    std::string text;
+    for (const std::string &part : parts)
+      text += (text.empty() ? "" : ", ") + part;
+    return text.empty() ? "none" : text;
+  }
+
+
+
   void
   StackParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -286,6 +326,50 @@ namespace coaxfit
         joint_entries[k].declare_parameters(prm, "the joint " + joint_name(k));
         prm.leave_subsection();
       }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Operation");
+    operation.temperature_text.resize(bodies.size());
+    prm.add_parameter("Assembly temperature",
+                      operation.assembly_temperature,
+                      "Temperature in degrees C at which the bodies are "
+                      "joined and their interferences measured (the state "
+                      "of assembly). Allowed: -273.15 < T <= 1000.",
+                      Patterns::Double(absolute_zero, hottest_temperature));
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      prm.add_parameter(bodies[b] + " temperature",
+                        operation.temperature_text[b],
+                        "Uniform temperature of " + bodies[b]
+                          + " in operation, in degrees C: it expands by "
+                            "Material/"
+                          + bodies[b]
+                          + "/Thermal expansion times the difference to the "
+                            "assembly temperature (a thermal eigenstrain). "
+                            "Empty: the assembly temperature. Allowed: "
+                            "-273.15 < T <= 1000.",
+                        Patterns::Anything());
+    prm.add_parameter("Speed",
+                      operation.speed,
+                      "Rotational speed of the whole stack in operation, in "
+                      "1/min: the centrifugal body force rho omega^2 r of "
+                      "every body (Material/<body>/Density). 0: at rest. "
+                      "Allowed: 0 to 1e7.",
+                      Patterns::Double(0., 1e7));
+    prm.add_parameter(bodies.front() + " bore pressure",
+                      operation.bore_pressure,
+                      "Pressure in MPa on the bore of the innermost body "
+                      "("
+                        + bodies.front()
+                        + ", hollow) in operation, e.g. a hydraulic "
+                          "cylinder's. Allowed: 0 to 1e4; a solid body "
+                          "takes none.",
+                      Patterns::Double(0., 1e4));
+    prm.add_parameter(bodies.back() + " outer pressure",
+                      operation.outer_pressure,
+                      "Pressure in MPa on the outer surface of the "
+                      "outermost body ("
+                        + bodies.back() + ") in operation. Allowed: 0 to 1e4.",
+                      Patterns::Double(0., 1e4));
     prm.leave_subsection();
 
     prm.enter_subsection("Design");
@@ -502,6 +586,35 @@ namespace coaxfit
             + " mm; allowed |U_w| <= 1 % of the joint diameter " + number(D)
             + " mm (the linear range)");
       }
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        const std::string name = "Operation/" + bodies[b] + " temperature";
+        check_temperature_entry(operation.temperature_of(b),
+                                b < operation.temperature_text.size() ?
+                                  operation.temperature_text[b] :
+                                  std::string(),
+                                name);
+        if (operation.temperature_of(b) != operation.assembly_temperature
+            && materials[b].thermal_expansion == 0.)
+          throw InputError("parameter Material/" + bodies[b]
+                           + "/Thermal expansion = 0 (unknown) but " + name
+                           + " = " + number(operation.temperature_of(b))
+                           + " differs from Operation/Assembly temperature = "
+                           + number(operation.assembly_temperature)
+                           + ": allowed is a coefficient > 0 in 1/K (or a "
+                             "Name that gives it)");
+        if (operation.speed > 0. && materials[b].density == 0.)
+          throw InputError("parameter Material/" + bodies[b]
+                           + "/Density = 0 (unknown) but Operation/Speed = "
+                           + number(operation.speed)
+                           + " 1/min: allowed is a density > 0 in kg/m^3 (or "
+                             "a Name that gives it)");
+      }
+    if (operation.bore_pressure > 0. && rings[0].inner_diameter == 0.)
+      throw InputError("parameter Operation/" + bodies[0]
+                       + " bore pressure = " + number(operation.bore_pressure)
+                       + ": the body " + bodies[0] + " is solid (Geometry/"
+                       + bodies[0] + "/Inner diameter = 0); allowed is 0");
     if (required_torque > 0.)
       for (unsigned int k = 0; k < n_joints(); ++k)
         if (fits[k].friction_coefficient == 0.)
@@ -757,6 +870,10 @@ namespace coaxfit
     if (base.size() > 4 && base.substr(base.size() - 4) == ".prm")
       base.resize(base.size() - 4);
     p.case_name = base.empty() ? "default" : base;
+    p.operation.temperature.clear();
+    for (const std::string &text : p.operation.temperature_text)
+      p.operation.temperature.push_back(
+        temperature_entry(text, p.operation.assembly_temperature));
     p.validate();
 
     std::ostringstream text;

@@ -2,6 +2,7 @@
 #define coaxfit_stack_fit_h
 
 #include <coaxfit/coupling/stack_coupling.h>
+#include <coaxfit/design/compound_cylinders.h>
 #include <coaxfit/design/verdict.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/parameters/stack_parameters.h>
@@ -152,6 +153,38 @@ namespace coaxfit
       return verdict;
     }
 
+    /** Whether the stack carries loads of operation (Operation). */
+    bool
+    has_loads() const
+    {
+      return parameters.operation.has_loads();
+    }
+
+    /**
+     * The joints in the state of assembly (no loads of operation), with
+     * loads; empty without (joint_figures() is then that state). Only the
+     * pressures, contact, gap, torque capacity and slip safety are set.
+     */
+    const std::vector<JointFigures> &
+    assembly_joint_figures() const
+    {
+      return joints_assembly;
+    }
+
+    /** The bodies' strength in the state of assembly, with loads. */
+    const std::vector<BodyFigures> &
+    assembly_body_figures() const
+    {
+      return bodies_assembly;
+    }
+
+    /** The state of assembly (no loads), with loads; empty without. */
+    const StackState &
+    assembly_state() const
+    {
+      return assembly_solution;
+    }
+
     const std::vector<SurfaceFigures> &
     surface_figures() const
     {
@@ -210,6 +243,38 @@ namespace coaxfit
     void
     write_report(const std::string &directory) const;
 
+    /**
+     * Each body's field for the joint forces of @p state, with its own
+     * answer to its loads of operation added if @p loaded.
+     */
+    std::vector<Vector<double>>
+    body_fields(const StackState &state, bool loaded) const;
+
+    /**
+     * The pressures, contact, gap, torque capacity and slip safety of
+     * joint @p k in @p state with the bodies' fields @p state_fields.
+     */
+    JointFigures
+    joint_state(unsigned int                       k,
+                const StackState                  &state,
+                const std::vector<Vector<double>> &state_fields) const;
+
+    /**
+     * The strength figures of body @p b with the field @p field (its
+     * stresses with the thermal strain of the body's current load).
+     */
+    BodyFigures
+    body_strength(unsigned int b, const Vector<double> &field) const;
+
+    /**
+     * The plane-stress compound cylinders of bodies @p first to @p last
+     * with their loads of operation (if the stack has them): the
+     * interferences less the free rings' growth apart, the pressures on
+     * the free surfaces of the whole stack.
+     */
+    CompoundCylinders
+    plane_stress(unsigned int first, unsigned int last) const;
+
     /** The two bodies of joint @p k alone: their contact, and steps. */
     StackState
     joint_alone(unsigned int k, unsigned int &staggered_steps) const;
@@ -226,11 +291,17 @@ namespace coaxfit
     std::vector<double>                              alpha;
     StackState                                       solution;
     std::vector<Vector<double>>                      fields;
-    std::vector<StackState>                          alone;
-    std::vector<JointFigures>                        joints_out;
-    std::vector<SurfaceFigures>                      surfaces_out;
-    std::vector<BodyFigures>                         bodies_out;
-    Verdict verdict = Verdict(std::vector<std::string>());
+    /** Each body's answer to its loads of operation (empty: none). */
+    std::vector<Vector<double>> load_fields;
+    /** With loads: the state of assembly and its figures. */
+    StackState                  assembly_solution;
+    std::vector<JointFigures>   joints_assembly;
+    std::vector<BodyFigures>    bodies_assembly;
+    std::vector<StackState>     alone;
+    std::vector<JointFigures>   joints_out;
+    std::vector<SurfaceFigures> surfaces_out;
+    std::vector<BodyFigures>    bodies_out;
+    Verdict                     verdict = Verdict(std::vector<std::string>());
     /** What output_results() said of the plots (drawn, or skipped why). */
     mutable std::string                    plots_note;
     std::vector<std::pair<double, double>> history;

@@ -7,7 +7,9 @@
 #include <coaxfit/parameters/stack_parameters.h>
 #include <coaxfit/solvers/interface_operator.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <ostream>
@@ -22,8 +24,9 @@ namespace coaxfit
    * One joint of a stack as the coupling sees it: its inner body k and
    * outer body k + 1, its points (shared by both bodies' meshes: point i
    * of the inner body's outer surface is point i of the outer body's
-   * bore), their lumped weights w_i = int N_i r dz and the radial
-   * interference d = U / 2.
+   * bore), their lumped weights w_i = int N_i r dz, the radial
+   * interference d = U / 2 and, with loads of operation, how far the
+   * loads alone move the sides apart.
    */
   struct StackJoint
   {
@@ -31,11 +34,38 @@ namespace coaxfit
     std::vector<double> z;    ///< mm, increasing from the mid-plane
     Vector<double>      weights;
     double              interference; ///< radial, mm; negative: clearance
+    /**
+     * u_outer - u_inner of the two free bodies under their loads of
+     * operation alone (thermal strain, rotation, pressures) at each point
+     * (mm); empty: no loads. The bodies are linear, so the contact of the
+     * loaded bodies is that of the unloaded ones with the interference
+     * d - load_shift_i (interference_at()); their fields add the load
+     * fields.
+     */
+    Vector<double> load_shift;
 
     unsigned int
     n_points() const
     {
       return z.size();
+    }
+
+    /** The radial interference left at point @p i under the loads (mm). */
+    double
+    interference_at(const unsigned int i) const
+    {
+      return load_shift.size() == 0 ? interference :
+                                      interference - load_shift[i];
+    }
+
+    /** The largest |interference_at(i)| over the points (mm). */
+    double
+    largest_interference() const
+    {
+      double d = 0.;
+      for (unsigned int i = 0; i < n_points(); ++i)
+        d = std::max(d, std::abs(interference_at(i)));
+      return d;
     }
   };
 

@@ -108,6 +108,27 @@ namespace coaxfit
           double                     inner_pressure,
           double                     outer_pressure);
   };
+  /**
+   * The radial displacement (mm) at radius @p r of the ring @p ring
+   * standing free (no pressure on its surfaces) under the uniform thermal
+   * strain @p thermal_strain = alpha (T - T_assembly) and the rotation
+   * @p rho_omega_squared = rho omega^2 (MPa/mm^2: 1e-12 times rho in
+   * kg/m^3 and omega^2 in (rad/s)^2), in plane stress:
+   *   u = thermal_strain r + r / E (sigma_t - nu sigma_r),
+   *   sigma_r = (3 + nu) / 8 q (a^2 + b^2 - a^2 b^2 / r^2 - r^2),
+   *   sigma_t = (3 + nu) / 8 q (a^2 + b^2 + a^2 b^2 / r^2)
+   *             - (1 + 3 nu) / 8 q r^2
+   * (the rotating disc; a = 0 for a solid one). The bodies are linear, so
+   * rings that carry these loads in contact have the pressures of
+   * unloaded rings with each joint's diametral interference less twice
+   * the free rings' u_outer - u_inner there: exact for the thermal
+   * strain, the plane-stress estimate for the rotation.
+   */
+  double
+  free_ring_displacement(const CompoundCylinders::Ring &ring,
+                         double                         r,
+                         double                         thermal_strain,
+                         double                         rho_omega_squared);
 } // namespace coaxfit
 
 #endif

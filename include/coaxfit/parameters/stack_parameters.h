@@ -55,6 +55,52 @@ namespace coaxfit
     declare_parameters(ParameterHandler &prm, const std::string &what);
   };
 
+  /**
+   * The loads of operation of a stack (`Operation`): a uniform temperature
+   * per body (its thermal strain alpha (T - T_assembly)), the speed of
+   * rotation of the whole stack (rho omega^2 r in every body), a pressure
+   * on the bore of a hollow innermost body and on the outer surface of
+   * the outermost. Without loads the run solves the state of assembly
+   * only; with loads it solves both states and the verdict judges both.
+   */
+  struct StackOperation
+  {
+    double assembly_temperature = 20.; ///< degrees C
+    /** `Operation/<body> temperature` as given; empty: assembly's. */
+    std::vector<std::string> temperature_text;
+    /** Each body's temperature in operation (degrees C, derived). */
+    std::vector<double> temperature;
+    double              speed          = 0.; ///< 1/min
+    double              bore_pressure  = 0.; ///< MPa, innermost body's bore
+    double              outer_pressure = 0.; ///< MPa, outermost body's outside
+
+    /** Body @p b's temperature (the assembly's if none is set). */
+    double
+    temperature_of(const unsigned int b) const
+    {
+      return b < temperature.size() ? temperature[b] : assembly_temperature;
+    }
+
+    /** Whether any load of operation is given. */
+    bool
+    has_loads() const;
+
+    /**
+     * The loads in words, e.g. `Shaft 40 C, Hub 80 C (assembly 20 C),
+     * 3000 1/min, Hub outer pressure 5 MPa`, for the bodies @p bodies.
+     */
+    std::string
+    describe(const std::vector<std::string> &bodies) const;
+
+    /** omega^2 in (rad/s)^2. */
+    double
+    omega_squared() const
+    {
+      const double omega = speed * 2. * 3.14159265358979323846 / 60.;
+      return omega * omega;
+    }
+  };
+
   /** How the staggered process of a stack visits its joints. */
   enum class StackOrdering
   {
@@ -109,6 +155,8 @@ namespace coaxfit
     std::string fit_case = "mean";
     /** Surfaces whose radial displacement is reported (`<body> bore`). */
     std::vector<std::string> report_surfaces;
+    /** The loads of operation (`Operation`). */
+    StackOperation operation;
 
     MeshParameters   mesh;
     SolverMethod     method      = SolverMethod::staggered;

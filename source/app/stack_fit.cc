@@ -20,11 +20,25 @@
 #include <limits>
 #include <numeric>
 #include <set>
+#include <sstream>
 
 namespace coaxfit
 {
   namespace
   {
+    /** A safety for the console: `infinite` without stress. */
+    std::string
+    safety_text(const double x)
+    {
+      std::ostringstream s;
+      s.precision(6);
+      if (std::isinf(x))
+        s << "infinite";
+      else
+        s << x;
+      return s.str();
+    }
+
     /** Seconds since @p start. */
     double
     seconds_since(const std::chrono::steady_clock::time_point start)
@@ -789,9 +803,12 @@ namespace coaxfit
             out << "; in the state of assembly " << a.von_mises_mid_plane
                 << " MPa";
             if (a.yield_strength > 0. && !a.brittle)
-              out << ", safety against yield " << a.yield_safety;
+              out << ", safety against yield " << safety_text(a.yield_safety)
+                  << (a.yield_safety < 1. ? ": YIELDS" : "");
             if (a.brittle && a.tensile_strength > 0.)
-              out << ", safety against fracture " << a.fracture_safety;
+              out << ", safety against fracture "
+                  << safety_text(a.fracture_safety)
+                  << (a.fracture_safety < 1. ? ": FRACTURES" : "");
           }
         out << '\n';
       }
@@ -801,6 +818,8 @@ namespace coaxfit
           << ", max " << s.u_max << "; diameter change " << 2. * s.u_mean
           << " mm\n";
 
+    for (const std::string &caution : parameters.warnings())
+      out << "  caution: " << caution << '\n';
     out << "  " << verdict.line() << '\n';
 
     timing["total"] = seconds_since(start);

@@ -235,7 +235,9 @@ namespace coaxfit
             assembly["pressure"] = pressure_json(a);
             assembly["contact"]  = {{"closed", a.closed},
                                     {"length", a.contact_length},
-                                    {"separated_points", a.separated_points}};
+                                    {"separated_points", a.separated_points},
+                                    {"gap_min", a.gap_min},
+                                    {"gap_max", a.gap_max}};
             if (a.friction_coefficient > 0.)
               {
                 assembly["torque_capacity"] = number_or_null(a.torque_capacity);

@@ -62,6 +62,8 @@ namespace coaxfit
           md << "- " << f << '\n';
         md << '\n';
       }
+    for (const std::string &caution : p.warnings())
+      md << "Caution: " << caution << ".\n\n";
     md << "The criteria: each joint with an interference touches; with a "
           "required torque each joint's safety against slip reaches "
        << design_figure(p.slip_safety)
@@ -122,11 +124,12 @@ namespace coaxfit
       }
 
     md << "\n## Joints" << (has_loads() ? " in operation" : "")
-       << "\n\nPressures in MPa: in the assembly (at the "
+       << "\n\nPressures in MPa: in the stack (at the "
           "mid-plane, mean over the joint, least and largest nodal value), "
           "alone (the joint's two bodies with the others removed, the same "
           "meshes) and the plane-stress compound-cylinder estimates "
-          "(exact for bodies of equal length with free ends).\n\n"
+          "(exact for bodies of equal length with free ends; under rotation an "
+          "estimate).\n\n"
           "U is the nominal diametral interference, U_w what is left "
           "after the smoothing loss 0.8 (Rz_inner + Rz_outer) of DIN "
           "7190-1, the interference the joint is solved with.\n\n"

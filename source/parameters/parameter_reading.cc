@@ -146,6 +146,29 @@ namespace coaxfit
 
 
   void
+  set_material_entries(ParameterHandler  &prm,
+                       const std::string &path,
+                       const Material    &material)
+  {
+    if (material.name == "custom")
+      return;
+    prm.enter_subsection("Material");
+    prm.enter_subsection(path);
+    prm.set("E", material.E);
+    prm.set("nu", material.nu);
+    prm.set("Yield strength", material.yield_strength);
+    prm.set("Density", material.density);
+    prm.set("Thermal expansion", material.thermal_expansion);
+    prm.set("Tensile strength", material.tensile_strength);
+    prm.set("Cooling expansion", material.cooling_expansion);
+    prm.set("Temperature limit", material.temperature_limit);
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  void
   fill_material(Material              &material,
                 const std::string     &path,
                 std::set<std::string> &missing)

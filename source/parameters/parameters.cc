@@ -1491,24 +1491,8 @@ namespace coaxfit
 
     // The written parameters must repeat the run: the values a material
     // Name filled in are written as given.
-    for (const auto &[path, material] :
-         {std::pair<std::string, const Material *>{"Shaft", &parameters.shaft},
-          {"Hub", &parameters.hub}})
-      if (material->name != "custom")
-        {
-          prm.enter_subsection("Material");
-          prm.enter_subsection(path);
-          prm.set("E", material->E);
-          prm.set("nu", material->nu);
-          prm.set("Yield strength", material->yield_strength);
-          prm.set("Density", material->density);
-          prm.set("Thermal expansion", material->thermal_expansion);
-          prm.set("Tensile strength", material->tensile_strength);
-          prm.set("Cooling expansion", material->cooling_expansion);
-          prm.set("Temperature limit", material->temperature_limit);
-          prm.leave_subsection();
-          prm.leave_subsection();
-        }
+    set_material_entries(prm, "Shaft", parameters.shaft);
+    set_material_entries(prm, "Hub", parameters.hub);
 
     std::ostringstream prm_text, json_text;
     prm.print_parameters(prm_text, ParameterHandler::ShortPRM);

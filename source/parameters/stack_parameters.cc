@@ -67,6 +67,11 @@ namespace coaxfit
               "parameter Assembly/Bodies: '" + name
               + "' is not a body name (allowed: letters, digits and _, "
                 "beginning with a letter; names separated by commas)");
+          if (name == "Assembly")
+            throw InputError(
+              "parameter Assembly/Bodies: the name 'Assembly' is reserved "
+              "(Operation/Assembly temperature is the temperature of "
+              "assembly, not a body's); allowed: any other name");
           if (!seen.insert(lower(name)).second)
             throw InputError("parameter Assembly/Bodies: the body '" + name
                              + "' is listed twice (each body once, inside "
@@ -143,6 +148,66 @@ namespace coaxfit
                              + " names no body of Assembly/Bodies (" + bodies
                              + ")");
         }
+    }
+
+    /**
+     * The parameter text @p text (ParameterHandler's short format) without
+     * the entries @p entries (`Fit.A-B.Diametral interference`): an entry
+     * the file did not give (a joint with an ISO fit has no interference)
+     * is not written, so that the text repeats the run.
+     */
+    std::string
+    without_entries(const std::string           &text,
+                    const std::set<std::string> &entries)
+    {
+      std::istringstream       lines(text);
+      std::string              line, result;
+      std::vector<std::string> path;
+      while (std::getline(lines, line))
+        {
+          const std::string t = trim(line);
+          if (t.rfind("subsection ", 0) == 0)
+            path.push_back(trim(t.substr(11)));
+          else if (t == "end" && !path.empty())
+            path.pop_back();
+          else if (t.rfind("set ", 0) == 0)
+            {
+              std::string entry;
+              for (const std::string &section : path)
+                entry += section + ".";
+              entry += trim(t.substr(4, t.find('=') - 4));
+              if (entries.count(entry) > 0)
+                continue;
+            }
+          result += line + '\n';
+        }
+      return result;
+    }
+
+    /**
+     * Throw an InputError that lists the entries of `Operation` for the
+     * bodies of @p p if @p entry is not one of them; @p where says where
+     * it was given.
+     */
+    void
+    check_operation_entry(const StackParameters &p,
+                          const std::string     &entry,
+                          const std::string     &where)
+    {
+      std::vector<std::string> allowed = {"Assembly temperature"};
+      for (const std::string &b : p.bodies)
+        allowed.push_back(b + " temperature");
+      allowed.push_back("Speed");
+      allowed.push_back(p.bodies.front() + " bore pressure");
+      allowed.push_back(p.bodies.back() + " outer pressure");
+      if (std::find(allowed.begin(), allowed.end(), entry) != allowed.end())
+        return;
+      std::string list;
+      for (const std::string &a : allowed)
+        list += (list.empty() ? "" : ", ") + a;
+      throw InputError(where + ": Operation/" + entry
+                       + " is no entry of a stack of these bodies (allowed: "
+                       + list + ")");
     }
   } // namespace
 
@@ -586,6 +651,10 @@ namespace coaxfit
             + " mm; allowed |U_w| <= 1 % of the joint diameter " + number(D)
             + " mm (the linear range)");
       }
+    require(operation.assembly_temperature > absolute_zero,
+            "Operation/Assembly temperature",
+            operation.assembly_temperature,
+            "-273.15 < T <= 1000 degrees C");
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         const std::string name = "Operation/" + bodies[b] + " temperature";
@@ -642,6 +711,26 @@ namespace coaxfit
                            + " is solid (no bore)");
       }
     mesh.validate();
+  }
+
+
+
+  std::vector<std::string>
+  StackParameters::warnings() const
+  {
+    std::vector<std::string> list;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        const Material &m = materials[b];
+        const double    T = operation.temperature_of(b);
+        if (m.temperature_limit > 0. && T > m.temperature_limit)
+          list.push_back("in service " + bodies[b] + " (" + m.name + ") at "
+                         + number(T) + " C is above its temperature limit "
+                         + number(m.temperature_limit) + " C, "
+                         + m.temperature_limit_reason
+                         + ": its strength figures do not hold there");
+      }
+    return list;
   }
 
 
@@ -750,11 +839,27 @@ namespace coaxfit
                              true,
                              "in parameter file '" + filename + "'");
           }
+        // An entry of Operation the stack does not have.
+        const std::string entry_marker = "No entry with name <";
+        const std::size_t entry_at     = message.find(entry_marker);
+        if (entry_at != std::string::npos
+            && message.find("declared in subsection Operation")
+                 != std::string::npos)
+          {
+            const std::size_t begin = entry_at + entry_marker.size();
+            check_operation_entry(
+              p,
+              message.substr(begin, message.find('>', begin) - begin),
+              "in parameter file '" + filename + "'");
+          }
         throw;
       }
     for (const auto &[path, value] : overrides)
       {
         check_subsection(p, path, false, "--set " + path + "=" + value);
+        const std::vector<std::string> parts = split_path(path);
+        if (parts.size() == 2 && parts[0] == "Operation")
+          check_operation_entry(p, parts[1], "--set " + path + "=" + value);
         set_entry(prm, path, value);
       }
 
@@ -876,10 +981,15 @@ namespace coaxfit
         temperature_entry(text, p.operation.assembly_temperature));
     p.validate();
 
+    // The written parameters must repeat the run: the values a material
+    // Name filled in are written as given.
+    for (unsigned int b = 0; b < p.bodies.size(); ++b)
+      set_material_entries(prm, p.bodies[b], p.materials[b]);
     std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::ShortPRM);
     p.used_prm = "# coaxfit: the parameters of this run (file '" + filename
-                 + "' with the --set overrides)\n" + text.str();
+                 + "' with the --set overrides)\n"
+                 + without_entries(text.str(), entries_not_set(prm));
     return p;
   }
 } // namespace coaxfit

@@ -51,6 +51,16 @@ namespace coaxfit
   parse_parameter_file(ParameterHandler &prm, const std::string &filename);
 
   /**
+   * Write the values of @p material that its Name filled in into the
+   * entries of `Material/@p path` of @p prm (a material of the library
+   * only), so that the parameters printed from @p prm repeat the run.
+   */
+  void
+  set_material_entries(ParameterHandler  &prm,
+                       const std::string &path,
+                       const Material    &material);
+
+  /**
    * Fill the entries of @p material (Material/@p path) that @p missing
    * lists (E, nu) or that are unknown (0) from its Name; drop E and nu
    * from @p missing.

@@ -208,6 +208,14 @@ namespace coaxfit
     void
     validate() const;
 
+    /**
+     * Cautions of the loads, one line each: a body held in operation above
+     * its material's temperature limit (its strength figures do not hold
+     * there).
+     */
+    std::vector<std::string>
+    warnings() const;
+
     /** Output/Directory, or output/<case name>. */
     std::string
     output_directory() const

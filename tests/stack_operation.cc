@@ -20,6 +20,7 @@
 //    the closed form's, the inner joint carries the closed form's
 //    pressure.
 // 4. Bad loads: one line naming the entry, exit 1, nothing written.
+// 5. The joining temperatures of a joint against DIN 7190's formula.
 
 #include <coaxfit/design/compound_cylinders.h>
 
@@ -264,6 +265,22 @@ main()
        {"Sleeve", 60., 90., 40., 110000., 0.34, 18e-6, 8800., 45.},
        {"Hub", 90., 160., 40., 70000., 0.33, 23e-6, 2700., 35.}};
   check_lame_state("three_rings_hot", three, {0.04, 0.06}, 30., 5.);
+  {
+    // DIN 7190's joining temperatures of the hub's joint: the hub heated
+    // by (U + 0.001 D) / (alpha_hub D), the sleeve cooled by the same over
+    // alpha_sleeve (no cooling coefficient given).
+    const nlohmann::json j       = read_summary("three_rings_hot")["joints"][1];
+    const double         open_up = 0.06 + 0.09;
+    std::cout << "  Sleeve-Hub joining: heat the hub to "
+              << agreement(j["joining"]["heat_outer_to"],
+                           20. + open_up / (23e-6 * 90.),
+                           1e-12)
+              << ", or cool the sleeve to "
+              << agreement(j["joining"]["cool_inner_to"],
+                           20. - open_up / (18e-6 * 90.),
+                           1e-12)
+              << '\n';
+  }
   const std::vector<Ring> five
     = {{"R0", 0., 20., 40., 210000., 0.3, 11.5e-6, 7850., 80.},
        {"R1", 20., 30., 40., 110000., 0.34, 18e-6, 8800., -20.},
@@ -317,7 +334,11 @@ main()
         "--set 'Operation/Hub temperature=hot' three_rings_hot.prm"},
        {"no such body",
         "--set 'Operation/Hubb temperature=80' three_rings_hot.prm"},
-       {"negative speed", "--set Operation/Speed=-1 three_rings_hot.prm"}};
+       {"negative speed", "--set Operation/Speed=-1 three_rings_hot.prm"},
+       {"joining clearance beyond 0.1 D",
+        "--set 'Operation/Joining clearance=7' three_rings_hot.prm"},
+       {"a body named Assembly",
+        "--set 'Assembly/Bodies=Core, Assembly, Hub' three_rings_hot.prm"}};
   for (const auto &[what, arguments] : bad)
     {
       std::filesystem::remove_all("bad");

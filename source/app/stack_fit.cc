@@ -8,9 +8,11 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/coupling/scene.h>
 #include <coaxfit/design/compound_cylinders.h>
+#include <coaxfit/design/din7190.h>
 #include <coaxfit/fe/body_stress.h>
 #include <coaxfit/fe/stack_mesh.h>
 #include <coaxfit/io/result_directory.h>
+#include <coaxfit/parameters/operation_entries.h>
 #include <coaxfit/parameters/parameter_checks.h>
 
 #include <algorithm>
@@ -36,6 +38,44 @@ namespace coaxfit
         s << "infinite";
       else
         s << x;
+      return s.str();
+    }
+
+    /** A temperature in degrees C with one decimal. */
+    std::string
+    celsius_text(const double T)
+    {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(1) << T << " C";
+      return s.str();
+    }
+
+    /**
+     * The joining figures of a joint in words: `joining (U_max ... +
+     * clearance ... mm, DIN 7190): heat <outer> to ... or cool <inner> to
+     * ...`.
+     */
+    std::string
+    joining_text(const JointFigures &f)
+    {
+      const std::size_t dash  = f.name.find('-');
+      const std::string inner = f.name.substr(0, dash),
+                        outer = f.name.substr(dash + 1);
+      std::ostringstream s;
+      s << std::setprecision(6) << "joining (U_max " << f.joining_interference
+        << " mm + clearance " << f.joining_clearance << " mm, DIN 7190): ";
+      if (!std::isnan(f.heat_outer_to))
+        s << "heat " << outer << " to " << celsius_text(f.heat_outer_to)
+          << (f.heat_above_limit ? " (above its temperature limit)" : "");
+      if (!std::isnan(f.heat_outer_to) && !std::isnan(f.cool_inner_to))
+        s << " or ";
+      if (!std::isnan(f.cool_inner_to))
+        s << "cool " << inner << " to " << celsius_text(f.cool_inner_to)
+          << (!f.cool_reachable ? " (not reachable: below -196 C)" :
+              f.cooling_from_heating ?
+                                  " (with its heating coefficient: no "
+                                  "Cooling expansion given, colder in fact)" :
+                                  "");
       return s.str();
     }
 
@@ -504,6 +544,39 @@ namespace coaxfit
 
 
 
+  void
+  StackFit::joining(const unsigned int k, JointFigures &f) const
+  {
+    const double    D     = parameters.joint_diameter(k);
+    const double    T     = parameters.operation.assembly_temperature;
+    const Material &inner = parameters.materials[k];
+    const Material &outer = parameters.materials[k + 1];
+    // A clearance needs no more than the joining clearance.
+    f.joining_interference = parameters.fits[k].largest_interference;
+    f.joining_clearance
+      = joining_clearance_entry(parameters.operation.joining_clearance_text, D);
+    const double U = std::max(f.joining_interference, -f.joining_clearance);
+    const double unknown = std::numeric_limits<double>::quiet_NaN();
+    f.heat_outer_to
+      = outer.thermal_expansion > 0. ? joining_temperature(
+          true, U, f.joining_clearance, D, outer.thermal_expansion, T) :
+                                       unknown;
+    f.heat_above_limit = outer.temperature_limit > 0.
+                         && f.heat_outer_to > outer.temperature_limit;
+    f.cooling_from_heating = !(inner.cooling_expansion > 0.);
+    f.cool_inner_to        = inner.joining_cooling_expansion() > 0. ?
+                               joining_temperature(false,
+                                            U,
+                                            f.joining_clearance,
+                                            D,
+                                            inner.joining_cooling_expansion(),
+                                            T) :
+                               unknown;
+    f.cool_reachable       = !(f.cool_inner_to < -196.);
+  }
+
+
+
   CompoundCylinders
   StackFit::plane_stress(const unsigned int first,
                          const unsigned int last) const
@@ -570,6 +643,7 @@ namespace coaxfit
                          / (joint.weights.mean_value() * joint.weights.size());
         f.lame_p       = lame.pressure(k);
         f.lame_alone_p = plane_stress(k, k + 1).pressure(0);
+        joining(k, f);
         joints_out.push_back(f);
       }
     // Each body's strength: von Mises on its surfaces.
@@ -767,6 +841,9 @@ namespace coaxfit
             }
           out << '\n';
         }
+    for (const JointFigures &f : joints_out)
+      if (!std::isnan(f.heat_outer_to) || !std::isnan(f.cool_inner_to))
+        out << "  " << f.name << ": " << joining_text(f) << '\n';
     for (const BodyFigures &f : bodies_out)
       {
         out << "  " << f.name << ": von Mises " << std::setprecision(6)

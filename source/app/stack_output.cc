@@ -53,6 +53,13 @@ namespace coaxfit
                                       {{"at_mid_plane", number_or_null(f.alone_p_mid)},
                                        {"mean", number_or_null(f.alone_p_mean)}}},
                                      {"staggered_steps", f.alone_steps}};
+      j["joining"] = {{"interference_max", f.joining_interference},
+                      {"clearance", f.joining_clearance},
+                      {"heat_outer_to", number_or_null(f.heat_outer_to)},
+                      {"heat_above_limit", f.heat_above_limit},
+                      {"cool_inner_to", number_or_null(f.cool_inner_to)},
+                      {"cool_reachable", f.cool_reachable},
+                      {"cooling_from_heating", f.cooling_from_heating}};
       j["plane_stress_estimate"]
         = {{"pressure", f.lame_p}, {"pressure_alone", f.lame_alone_p}};
       if (f.friction_coefficient > 0.)

@@ -173,6 +173,32 @@ namespace coaxfit
                 "torque).\n";
       }
 
+    md << "\n## Joining (DIN 7190)\n\nThe stack built inside out: each "
+          "joint's outer body heated, or its inner body cooled, until the "
+          "largest interference and the joining clearance (Operation/Joining "
+          "clearance) are gone; from the assembly temperature "
+       << design_figure(p.operation.assembly_temperature)
+       << " C. Cooling below -196 C (liquid nitrogen) is not reachable.\n\n"
+          "| joint | U_max mm | clearance mm | heat the outer body to C | "
+          "or cool the inner body to C |\n|---|---|---|---|---|\n";
+    for (const JointFigures &f : joints_out)
+      md << "| " << f.name << " | " << design_figure(f.joining_interference)
+         << " | " << design_figure(f.joining_clearance) << " | "
+         << (std::isnan(f.heat_outer_to) ?
+               std::string("no thermal expansion") :
+               design_figure(f.heat_outer_to)
+                 + (f.heat_above_limit ? " (above its temperature limit)" : ""))
+         << " | "
+         << (std::isnan(f.cool_inner_to) ?
+               std::string("no thermal expansion") :
+               design_figure(f.cool_inner_to)
+                 + (!f.cool_reachable ?
+                      " (not reachable)" :
+                    f.cooling_from_heating ?
+                      " (heating coefficient: colder in fact)" :
+                      ""))
+         << " |\n";
+
     md << "\n## Strength of the bodies\n\nOn the bodies' joint and free "
           "surfaces, MPa; the safeties at the mid-plane.\n\n"
           "| body | von Mises, mid-plane | von Mises, largest | hoop, "

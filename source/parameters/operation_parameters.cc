@@ -1,6 +1,6 @@
+#include <coaxfit/parameters/operation_entries.h>
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/scene_parameters.h>
-#include <coaxfit/parameters/temperature_entry.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -35,6 +35,17 @@ namespace coaxfit
   {
     const auto first = text.find_first_not_of(" \t");
     return first == std::string::npos ? assembly : parse_number(text);
+  }
+
+
+
+  double
+  joining_clearance_entry(const std::string &text, const double D)
+  {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos || text.compare(first, 4, "auto") == 0)
+      return 1e-3 * D;
+    return parse_number(text);
   }
 
 
@@ -157,11 +168,7 @@ namespace coaxfit
   double
   OperationParameters::joining_clearance(const double joint_diameter) const
   {
-    const auto first = joining_clearance_text.find_first_not_of(" \t");
-    if (first == std::string::npos
-        || joining_clearance_text.compare(first, 4, "auto") == 0)
-      return 1e-3 * joint_diameter;
-    return parse_number(joining_clearance_text);
+    return joining_clearance_entry(joining_clearance_text, joint_diameter);
   }
 
 

@@ -1,10 +1,10 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/parameters/iso286.h>
+#include <coaxfit/parameters/operation_entries.h>
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/parameter_file.h>
 #include <coaxfit/parameters/parameter_reading.h>
 #include <coaxfit/parameters/stack_parameters.h>
-#include <coaxfit/parameters/temperature_entry.h>
 
 #include <algorithm>
 #include <cctype>
@@ -200,6 +200,7 @@ namespace coaxfit
       allowed.push_back("Speed");
       allowed.push_back(p.bodies.front() + " bore pressure");
       allowed.push_back(p.bodies.back() + " outer pressure");
+      allowed.push_back("Joining clearance");
       if (std::find(allowed.begin(), allowed.end(), entry) != allowed.end())
         return;
       std::string list;
@@ -435,6 +436,16 @@ namespace coaxfit
                       "outermost body ("
                         + bodies.back() + ") in operation. Allowed: 0 to 1e4.",
                       Patterns::Double(0., 1e4));
+    prm.add_parameter(
+      "Joining clearance",
+      operation.joining_clearance_text,
+      "Diametral clearance in mm each joint needs while it is joined "
+      "(DIN 7190's joining clearance), for the joining temperatures: the "
+      "outer body of each joint heated, or the inner one cooled, until "
+      "the joint's largest interference plus this clearance is gone. "
+      "auto: 0.001 D at each joint, DIN 7190's guide value. Allowed: auto "
+      "or 0 <= clearance <= 0.1 D of every joint.",
+      Patterns::Anything());
     prm.leave_subsection();
 
     prm.enter_subsection("Design");
@@ -678,6 +689,18 @@ namespace coaxfit
                            + number(operation.speed)
                            + " 1/min: allowed is a density > 0 in kg/m^3 (or "
                              "a Name that gives it)");
+      }
+    for (unsigned int k = 0; k < n_joints(); ++k)
+      {
+        const double D = joint_diameter(k);
+        const double s
+          = joining_clearance_entry(operation.joining_clearance_text, D);
+        if (std::isnan(s) || s < 0. || s > 0.1 * D)
+          throw InputError("parameter Operation/Joining clearance = '"
+                           + operation.joining_clearance_text
+                           + "': allowed is auto or a number of mm from 0 to "
+                             "0.1 D of every joint (the joint "
+                           + joint_name(k) + ": D " + number(D) + " mm)");
       }
     if (operation.bore_pressure > 0. && rings[0].inner_diameter == 0.)
       throw InputError("parameter Operation/" + bodies[0]
@@ -930,8 +953,9 @@ namespace coaxfit
               = p.fit_case == "min" ? U_min :
                 p.fit_case == "max" ? U_max :
                                       0.5 * (U_min + U_max);
-            fit.iso_fit = iso.name;
-            fit.source  = (mine ? path : std::string("Fit/")) + "ISO fit "
+            fit.iso_fit              = iso.name;
+            fit.largest_interference = U_max;
+            fit.source = (mine ? path : std::string("Fit/")) + "ISO fit "
                          + iso.name + ", " + p.fit_case;
           }
         else if (default_given)
@@ -954,6 +978,8 @@ namespace coaxfit
                                      entries.outer_roughness :
                                      p.default_fit.outer_roughness;
         fit.nominal_interference = fit.diametral_interference;
+        if (fit.iso_fit.empty())
+          fit.largest_interference = fit.diametral_interference;
         fit.smoothing_loss
           = 0.8e-3 * (fit.inner_roughness + fit.outer_roughness);
         fit.diametral_interference -= fit.smoothing_loss;

@@ -46,6 +46,23 @@ namespace coaxfit
     double       friction_coefficient; ///< 0: not given
     double       torque_capacity;      ///< N m (friction given)
     double       slip_safety;          ///< over Design/Required torque; 0: none
+    /**
+     * @name Joining (DIN 7190), the stack built inside out: the outer body
+     * of the joint heated, or the inner one cooled, until the largest
+     * interference plus the joining clearance is gone.
+     */
+    /** @{ */
+    double joining_interference = 0.; ///< mm, the largest U
+    double joining_clearance    = 0.; ///< mm
+    double heat_outer_to        = 0.; ///< C; NaN: no thermal expansion known
+    double cool_inner_to = 0.; ///< C; NaN: no expansion coefficient known
+    /** The inner body's heating coefficient was used (no Cooling expansion). */
+    bool cooling_from_heating = false;
+    /** The outer body's temperature would exceed its temperature limit. */
+    bool heat_above_limit = false;
+    /** The cooling temperature is not below -196 C (liquid nitrogen). */
+    bool cool_reachable = true;
+    /** @} */
   };
 
   /**
@@ -274,6 +291,10 @@ namespace coaxfit
      */
     CompoundCylinders
     plane_stress(unsigned int first, unsigned int last) const;
+
+    /** The joining figures of joint @p k into @p f (DIN 7190). */
+    void
+    joining(unsigned int k, JointFigures &f) const;
 
     /** The two bodies of joint @p k alone: their contact, and steps. */
     StackState

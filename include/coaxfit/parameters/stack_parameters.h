@@ -41,10 +41,12 @@ namespace coaxfit
      * effective interference U_w the joint is solved with: the nominal
      * one less the smoothing loss.
      */
-    double      diametral_interference = 0.;
-    double      inner_roughness      = 0.; ///< Rz of the inner body's seat, um
-    double      outer_roughness      = 0.; ///< Rz of the outer body's bore, um
-    double      nominal_interference = 0.; ///< U as given (derived), mm
+    double diametral_interference = 0.;
+    double inner_roughness        = 0.; ///< Rz of the inner body's seat, um
+    double outer_roughness        = 0.; ///< Rz of the outer body's bore, um
+    double nominal_interference   = 0.; ///< U as given (derived), mm
+    /** The largest interference (mm, derived): an ISO fit's, else U. */
+    double      largest_interference = 0.;
     double      smoothing_loss       = 0.; ///< 0.8 (Rz_i + Rz_o), mm
     double      friction_coefficient = 0.; ///< 0: not given (no torque figures)
     std::string iso_fit;                   ///< `H7/s6`; empty: none
@@ -73,6 +75,8 @@ namespace coaxfit
     double              speed          = 0.; ///< 1/min
     double              bore_pressure  = 0.; ///< MPa, innermost body's bore
     double              outer_pressure = 0.; ///< MPa, outermost body's outside
+    /** `Operation/Joining clearance`: `auto` (0.001 D) or mm. */
+    std::string joining_clearance_text = "auto";
 
     /** Body @p b's temperature (the assembly's if none is set). */
     double

@@ -1,8 +1,12 @@
-#ifndef coaxfit_temperature_entry_h
-#define coaxfit_temperature_entry_h
+#ifndef coaxfit_operation_entries_h
+#define coaxfit_operation_entries_h
 
 #include <string>
 
+/**
+ * @file The entries of `Operation` that are text: temperatures (empty: the
+ * assembly temperature) and the joining clearance (`auto`).
+ */
 namespace coaxfit
 {
   /** Absolute zero in degrees C. */
@@ -28,6 +32,13 @@ namespace coaxfit
   check_temperature_entry(double             value,
                           const std::string &text,
                           const std::string &name);
+  /**
+   * The joining clearance (mm, diametral) of the entry @p text at the
+   * joint diameter @p D: `auto` (or empty) is DIN 7190's guide value
+   * 0.001 D; NaN if @p text is not one number.
+   */
+  double
+  joining_clearance_entry(const std::string &text, double D);
 } // namespace coaxfit
 
 #endif

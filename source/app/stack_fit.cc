@@ -9,6 +9,7 @@
 #include <coaxfit/coupling/scene.h>
 #include <coaxfit/design/compound_cylinders.h>
 #include <coaxfit/design/din7190.h>
+#include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/fe/body_stress.h>
 #include <coaxfit/fe/stack_mesh.h>
 #include <coaxfit/io/result_directory.h>
@@ -41,15 +42,6 @@ namespace coaxfit
       return s.str();
     }
 
-    /** A temperature in degrees C with one decimal. */
-    std::string
-    celsius_text(const double T)
-    {
-      std::ostringstream s;
-      s << std::fixed << std::setprecision(1) << T << " C";
-      return s.str();
-    }
-
     /**
      * The joining figures of a joint in words: `joining (U_max ... +
      * clearance ... mm, DIN 7190): heat <outer> to ... or cool <inner> to
@@ -65,12 +57,12 @@ namespace coaxfit
       s << std::setprecision(6) << "joining (U_max " << f.joining_interference
         << " mm + clearance " << f.joining_clearance << " mm, DIN 7190): ";
       if (!std::isnan(f.heat_outer_to))
-        s << "heat " << outer << " to " << celsius_text(f.heat_outer_to)
+        s << "heat " << outer << " to " << celsius(f.heat_outer_to)
           << (f.heat_above_limit ? " (above its temperature limit)" : "");
       if (!std::isnan(f.heat_outer_to) && !std::isnan(f.cool_inner_to))
         s << " or ";
       if (!std::isnan(f.cool_inner_to))
-        s << "cool " << inner << " to " << celsius_text(f.cool_inner_to)
+        s << "cool " << inner << " to " << celsius(f.cool_inner_to)
           << (!f.cool_reachable ? " (not reachable: below -196 C)" :
               f.cooling_from_heating ?
                                   " (with its heating coefficient: no "

@@ -564,7 +564,7 @@ namespace coaxfit
                                             inner.joining_cooling_expansion(),
                                             T) :
                                unknown;
-    f.cool_reachable       = !(f.cool_inner_to < -196.);
+    f.cool_reachable = !(f.cool_inner_to < OperationAnalysis::coldest_coolant);
   }
 
 

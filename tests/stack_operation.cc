@@ -21,6 +21,10 @@
 //    pressure.
 // 4. Bad loads: one line naming the entry, exit 1, nothing written.
 // 5. The joining temperatures of a joint against DIN 7190's formula.
+// 6. The loosening speed of each joint (bisected on the condensed
+//    compliances): the two-body code's for the stack of two (1e-5), and
+//    for three rings confirmed by the staggered process 0.1 % below and
+//    above it.
 
 #include <coaxfit/design/compound_cylinders.h>
 
@@ -248,7 +252,45 @@ end
                   << agreement(j["assembly"]["pressure"]["mean"],
                                at_assembly["pressure_mean"],
                                1e-8)
+                  << ", loosening speed "
+                  << agreement(j["loosening_speed"],
+                               two["operation"]["loosening_speed"],
+                               1e-5)
                   << '\n';
+      }
+  }
+
+  /**
+   * The loosening speeds of a rotating stack confirmed by the staggered
+   * process: 0.1 % below each joint's speed it touches, 0.1 % above it is
+   * open over its whole length.
+   */
+  void
+  check_loosening(const std::string &file)
+  {
+    std::filesystem::remove_all("spin");
+    run_coaxfit("spin", quiet + file);
+    const nlohmann::json joints = read_summary("spin")["joints"];
+    for (unsigned int k = 0; k < joints.size(); ++k)
+      {
+        const double n = joints[k]["loosening_speed"];
+        std::cout << "  " << joints[k]["name"].get<std::string>()
+                  << ": loosening speed " << std::setprecision(4) << n
+                  << " 1/min; the staggered process at";
+        for (const double factor : {0.999, 1.001})
+          {
+            std::filesystem::remove_all("spin_at");
+            std::ostringstream speed;
+            speed << std::setprecision(12) << factor * n;
+            run_coaxfit("spin_at",
+                        quiet + "--set Operation/Speed=" + speed.str() + " "
+                          + file);
+            const nlohmann::json c
+              = read_summary("spin_at")["joints"][k]["contact"];
+            std::cout << (factor < 1. ? " 0.999 x: " : ", 1.001 x: ")
+                      << (c["length"].get<double>() > 0. ? "touches" : "open");
+          }
+        std::cout << '\n';
       }
   }
 } // namespace
@@ -288,6 +330,14 @@ main()
        {"R3", 45., 60., 40., 210000., 0.3, 11.5e-6, 7850., 20.},
        {"R4", 60., 80., 40., 120000., 0.28, 10e-6, 7200., 50.}};
   check_lame_state("five_rings_hot", five, {0.02, 0.03, 0.05, 0.04}, 0., 12.);
+
+  // The three rings at 3000 1/min: each joint's loosening speed.
+  {
+    std::ofstream("three_rings_spin.prm")
+      << stack_prm(three, {0.04, 0.06}, "  set Speed = 3000\n", lame_mesh);
+    std::cout << "three_rings_spin:\n";
+    check_loosening("three_rings_spin.prm");
+  }
 
   // Part 3: the hub at 120 C loses its joint (exact: the thermal growth
   // 90 mm x (23e-6 x 100 - 18e-6 x 25) = 0.1665 mm of diameter exceeds

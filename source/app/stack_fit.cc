@@ -267,6 +267,29 @@ namespace coaxfit
               joint.load_shift[i] = u_load[k + 1][layout.offset(k + 1, k) + i]
                                     - u_load[k][layout.offset(k, k) + i];
           }
+        // With a speed, the part of the shift that rotation causes per
+        // (rad/s)^2, for the loosening speeds.
+        rotation_shift.clear();
+        if (parameters.operation.speed > 0.)
+          {
+            std::vector<Vector<double>> u_unit;
+            for (unsigned int b = 0; b < N; ++b)
+              {
+                BodyLoad unit;
+                unit.omega_squared = 1.;
+                u_unit.push_back(bodies[b]->interface_radial_values(
+                  solvers[b]->solve_load_field(
+                    bodies[b]->assemble_load_vector(unit))));
+              }
+            for (unsigned int k = 0; k + 1 < N; ++k)
+              {
+                rotation_shift.emplace_back(stack_joints[k].n_points());
+                for (unsigned int i = 0; i < stack_joints[k].n_points(); ++i)
+                  rotation_shift[k][i]
+                    = u_unit[k + 1][layout.offset(k + 1, k) + i]
+                      - u_unit[k][layout.offset(k, k) + i];
+              }
+          }
       }
 
     // Each joint's Winkler alpha k_o / (k_i + k_o) from the mean diagonal
@@ -536,6 +559,83 @@ namespace coaxfit
 
 
 
+  StackState
+  StackFit::state_at_speed(const double omega_squared) const
+  {
+    const double omega_squared_operation = parameters.operation.omega_squared();
+    std::vector<StackJoint> joints       = stack_joints;
+    for (unsigned int k = 0; k < joints.size(); ++k)
+      for (unsigned int i = 0; i < joints[k].n_points(); ++i)
+        joints[k].load_shift[i]
+          += (omega_squared - omega_squared_operation) * rotation_shift[k][i];
+    std::vector<FullMatrix<double>> C;
+    for (const auto &c : condensed)
+      C.push_back(c->get_compliance());
+    unsigned int set_steps = 0;
+    return solve_stack_contact(C, joints, parameters.unilateral, set_steps);
+  }
+
+
+
+  void
+  StackFit::loosening_speeds()
+  {
+    if (rotation_shift.empty() || !parameters.unilateral)
+      return;
+    const auto omega_squared = [](const double n) {
+      const double omega = n * 2. * M_PI / 60.;
+      return omega * omega;
+    };
+    const auto open = [](const StackState &state, const unsigned int k) {
+      return std::none_of(state.contact[k].begin(),
+                          state.contact[k].end(),
+                          [](const bool c) { return c; });
+    };
+    const unsigned int  n_joints = stack_joints.size();
+    std::vector<double> closed_below(n_joints, 0.),
+      open_at(n_joints, std::numeric_limits<double>::infinity());
+    // The scan: the first speed at which each joint is wholly open.
+    for (double n = 100.; n <= 1e6 * 1.0000001; n *= 1.1)
+      {
+        const StackState state = state_at_speed(omega_squared(n));
+        bool             done  = true;
+        for (unsigned int k = 0; k < n_joints; ++k)
+          if (std::isinf(open_at[k]))
+            {
+              if (open(state, k))
+                open_at[k] = n;
+              else
+                closed_below[k] = n;
+              done = done && !std::isinf(open_at[k]);
+            }
+        if (done)
+          break;
+      }
+    for (unsigned int k = 0; k < n_joints; ++k)
+      {
+        JointFigures &f = joints_out[k];
+        if (f.diametral_interference <= 0.)
+          continue;
+        if (std::isinf(open_at[k]))
+          {
+            f.loosening_speed = open_at[k];
+            continue;
+          }
+        // Open already at the first speed scanned: from rest.
+        double lo = closed_below[k], hi = open_at[k];
+        if (lo == 0. && open(state_at_speed(0.), k))
+          hi = 0.;
+        while (hi - lo > 1e-6 * hi)
+          {
+            const double mid = 0.5 * (lo + hi);
+            (open(state_at_speed(omega_squared(mid)), k) ? hi : lo) = mid;
+          }
+        f.loosening_speed = hi;
+      }
+  }
+
+
+
   void
   StackFit::joining(const unsigned int k, JointFigures &f) const
   {
@@ -638,6 +738,7 @@ namespace coaxfit
         joining(k, f);
         joints_out.push_back(f);
       }
+    loosening_speeds();
     // Each body's strength: von Mises on its surfaces.
     bodies_out.clear();
     for (unsigned int b = 0; b < N; ++b)
@@ -833,6 +934,16 @@ namespace coaxfit
             }
           out << '\n';
         }
+    for (const JointFigures &f : joints_out)
+      if (!std::isnan(f.loosening_speed))
+        out << "  " << f.name << ": "
+            << (std::isinf(f.loosening_speed) ?
+                  std::string("holds up to 1e6 1/min") :
+                  "open over its whole length from "
+                    + number(f.loosening_speed, 6) + " 1/min")
+            << " (loosening speed, the other loads as in operation; "
+               "operating speed "
+            << parameters.operation.speed << " 1/min)\n";
     for (const JointFigures &f : joints_out)
       if (!std::isnan(f.heat_outer_to) || !std::isnan(f.cool_inner_to))
         out << "  " << f.name << ": " << joining_text(f) << '\n';

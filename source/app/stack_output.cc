@@ -60,6 +60,8 @@ namespace coaxfit
                       {"cool_inner_to", number_or_null(f.cool_inner_to)},
                       {"cool_reachable", f.cool_reachable},
                       {"cooling_from_heating", f.cooling_from_heating}};
+      if (!std::isnan(f.loosening_speed))
+        j["loosening_speed"] = number_or_null(f.loosening_speed);
       j["plane_stress_estimate"]
         = {{"pressure", f.lame_p}, {"pressure_alone", f.lame_alone_p}};
       if (f.friction_coefficient > 0.)

@@ -93,6 +93,14 @@ namespace coaxfit
              << (f.closed ? std::string("closed") :
                             std::to_string(f.separated_points) + " points open")
              << " | " << slip_cells(f, p.required_torque) << " |\n";
+        for (const JointFigures &f : joints_out)
+          if (!std::isnan(f.loosening_speed))
+            md << "\nLoosening speed of " << f.name << ": "
+               << (std::isinf(f.loosening_speed) ?
+                     std::string("it holds up to 1e6 1/min") :
+                     "open over its whole length from "
+                       + design_figure(f.loosening_speed) + " 1/min")
+               << " (the other loads as in operation).\n";
         md << "\n| body | von Mises, mid-plane MPa | hoop, mid-plane MPa | "
               "safety against yield | safety against fracture |\n"
               "|---|---|---|---|---|\n";

@@ -9,6 +9,7 @@
 #include <coaxfit/solvers/body_solver.h>
 #include <coaxfit/solvers/condensed_body.h>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -63,6 +64,13 @@ namespace coaxfit
     /** The cooling temperature is not below -196 C (liquid nitrogen). */
     bool cool_reachable = true;
     /** @} */
+    /**
+     * With a speed of operation: the speed (1/min) at which the joint is
+     * open over its whole length, the other loads as in operation;
+     * infinite if it holds up to 1e6 1/min, NaN if not computed (no speed,
+     * a clearance, bilateral joints).
+     */
+    double loosening_speed = std::numeric_limits<double>::quiet_NaN();
   };
 
   /**
@@ -292,6 +300,23 @@ namespace coaxfit
     CompoundCylinders
     plane_stress(unsigned int first, unsigned int last) const;
 
+    /**
+     * The contact of all joints at the speed whose omega^2 is
+     * @p omega_squared ((rad/s)^2), the other loads as in operation
+     * (monolithically on the condensed compliances).
+     */
+    StackState
+    state_at_speed(double omega_squared) const;
+
+    /**
+     * Each joint's loosening speed (JointFigures::loosening_speed): the
+     * speeds scanned upwards in steps of 10 % from 100 to 1e6 1/min, the
+     * first at which a joint is open over its whole length bisected to
+     * 1e-6.
+     */
+    void
+    loosening_speeds();
+
     /** The joining figures of joint @p k into @p f (DIN 7190). */
     void
     joining(unsigned int k, JointFigures &f) const;
@@ -314,6 +339,11 @@ namespace coaxfit
     std::vector<Vector<double>>                      fields;
     /** Each body's answer to its loads of operation (empty: none). */
     std::vector<Vector<double>> load_fields;
+    /**
+     * With a speed: each joint's load shift per (rad/s)^2 of rotation
+     * (StackJoint::load_shift is the rest plus omega^2 times this).
+     */
+    std::vector<Vector<double>> rotation_shift;
     /** With loads: the state of assembly and its figures. */
     StackState                  assembly_solution;
     std::vector<JointFigures>   joints_assembly;

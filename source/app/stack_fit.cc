@@ -1002,8 +1002,8 @@ namespace coaxfit
       out << "  caution: " << caution << '\n';
     out << "  " << verdict.line() << '\n';
 
-    timing["total"] = seconds_since(start);
-    output_results(directory.staging_path());
+    timing["total"]              = seconds_since(start);
+    const std::string plots_note = output_results(directory.staging_path());
     if (plots_note.rfind("plots skipped", 0) == 0)
       out << "  " << plots_note << '\n';
     directory.commit(out);

@@ -78,7 +78,7 @@ namespace coaxfit
 
 
 
-  void
+  std::string
   StackFit::output_results(const std::string &directory) const
   {
     const unsigned int N = bodies.size();
@@ -190,7 +190,8 @@ namespace coaxfit
         close_result_file(out, name);
       }
 
-    plots_note = parameters.write_plots ? write_plots(directory) : "";
+    const std::string plots_note
+      = parameters.write_plots ? write_plots(directory) : "";
 
     // summary.json, last.
     Json j;
@@ -314,6 +315,7 @@ namespace coaxfit
     close_result_file(out, name);
     // The report last: it lists the files written.
     if (parameters.write_report)
-      write_report(directory);
+      write_report(directory, plots_note);
+    return plots_note;
   }
 } // namespace coaxfit

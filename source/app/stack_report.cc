@@ -45,7 +45,8 @@ namespace coaxfit
 
 
   void
-  StackFit::write_report(const std::string &directory) const
+  StackFit::write_report(const std::string &directory,
+                         const std::string &plots_note) const
   {
     const StackParameters &p    = parameters;
     const std::string      name = directory + "/report.md";

@@ -141,8 +141,12 @@ namespace coaxfit
     void
     postprocess();
 
-    /** Write the results into @p directory (a staging directory). */
-    void
+    /**
+     * Write the results into @p directory (a staging directory). Returns
+     * what became of the plots: drawn (the files), skipped (why), or empty
+     * (Output/Write plots = false).
+     */
+    std::string
     output_results(const std::string &directory) const;
 
     /**
@@ -264,9 +268,13 @@ namespace coaxfit
     std::string
     write_plots(const std::string &directory) const;
 
-    /** report.md: inputs, verdict, joints, bodies, surfaces. */
+    /**
+     * report.md: inputs, verdict, joints, bodies, surfaces, and the files
+     * written (@p plots_note: what became of the plots).
+     */
     void
-    write_report(const std::string &directory) const;
+    write_report(const std::string &directory,
+                 const std::string &plots_note) const;
 
     /**
      * Each body's field for the joint forces of @p state, with its own
@@ -353,8 +361,6 @@ namespace coaxfit
     std::vector<SurfaceFigures> surfaces_out;
     std::vector<BodyFigures>    bodies_out;
     Verdict                     verdict = Verdict(std::vector<std::string>());
-    /** What output_results() said of the plots (drawn, or skipped why). */
-    mutable std::string                    plots_note;
     std::vector<std::pair<double, double>> history;
     bool                                   converged        = false;
     unsigned int                           steps            = 0;

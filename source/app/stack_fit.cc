@@ -63,7 +63,9 @@ namespace coaxfit
         s << " or ";
       if (!std::isnan(f.cool_inner_to))
         s << "cool " << inner << " to " << celsius(f.cool_inner_to)
-          << (!f.cool_reachable ? " (not reachable: below -196 C)" :
+          << (f.cool_inner_to <= absolute_zero ?
+                " (not reachable: below absolute zero)" :
+              !f.cool_reachable ? " (not reachable: below -196 C)" :
               f.cooling_from_heating ?
                                   " (with its heating coefficient: no "
                                   "Cooling expansion given, colder in fact)" :
@@ -595,7 +597,7 @@ namespace coaxfit
     std::vector<double> closed_below(n_joints, 0.),
       open_at(n_joints, std::numeric_limits<double>::infinity());
     // The scan: the first speed at which each joint is wholly open.
-    for (double n = 100.; n <= 1e6 * 1.0000001; n *= 1.1)
+    for (double n = 100.; n <= loosening_limit() * 1.0000001; n *= 1.1)
       {
         const StackState state = state_at_speed(omega_squared(n));
         bool             done  = true;
@@ -613,9 +615,8 @@ namespace coaxfit
       }
     for (unsigned int k = 0; k < n_joints; ++k)
       {
+        // Every joint, a clearance too: heat or pressure may close it.
         JointFigures &f = joints_out[k];
-        if (f.diametral_interference <= 0.)
-          continue;
         if (std::isinf(open_at[k]))
           {
             f.loosening_speed = open_at[k];
@@ -938,7 +939,7 @@ namespace coaxfit
       if (!std::isnan(f.loosening_speed))
         out << "  " << f.name << ": "
             << (std::isinf(f.loosening_speed) ?
-                  std::string("holds up to 1e6 1/min") :
+                  "holds up to " + number(loosening_limit(), 6) + " 1/min" :
                   "open over its whole length from "
                     + number(f.loosening_speed, 6) + " 1/min")
             << " (loosening speed, the other loads as in operation; "

@@ -57,9 +57,13 @@ namespace coaxfit
                       {"clearance", f.joining_clearance},
                       {"heat_outer_to", number_or_null(f.heat_outer_to)},
                       {"heat_above_limit", f.heat_above_limit},
-                      {"cool_inner_to", number_or_null(f.cool_inner_to)},
-                      {"cool_reachable", f.cool_reachable},
-                      {"cooling_from_heating", f.cooling_from_heating}};
+                      {"cool_inner_to", number_or_null(f.cool_inner_to)}};
+      // Without the inner body's expansion nothing is known of cooling.
+      j["joining"]["cool_reachable"]
+        = std::isnan(f.cool_inner_to) ? Json(nullptr) : Json(f.cool_reachable);
+      j["joining"]["cooling_from_heating"] = std::isnan(f.cool_inner_to) ?
+                                               Json(nullptr) :
+                                               Json(f.cooling_from_heating);
       if (!std::isnan(f.loosening_speed))
         j["loosening_speed"] = number_or_null(f.loosening_speed);
       j["plane_stress_estimate"]
@@ -199,6 +203,7 @@ namespace coaxfit
     j["assembly"]  = {{"bodies", parameters.bodies}};
     j["converged"] = converged;
     j["verdict"]   = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
+    j["warnings"]  = parameters.warnings();
     Json method;
     method["method"] = parameters.method == SolverMethod::monolithic ?
                          "monolithic" :

@@ -1,6 +1,7 @@
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/design/design_report.h>
 #include <coaxfit/io/result_writers.h>
+#include <coaxfit/parameters/operation_entries.h>
 
 #include <cmath>
 #include <filesystem>
@@ -98,7 +99,8 @@ namespace coaxfit
           if (!std::isnan(f.loosening_speed))
             md << "\nLoosening speed of " << f.name << ": "
                << (std::isinf(f.loosening_speed) ?
-                     std::string("it holds up to 1e6 1/min") :
+                     "it holds up to " + design_figure(loosening_limit())
+                       + " 1/min" :
                      "open over its whole length from "
                        + design_figure(f.loosening_speed) + " 1/min")
                << " (the other loads as in operation).\n";
@@ -201,7 +203,9 @@ namespace coaxfit
          << (std::isnan(f.cool_inner_to) ?
                std::string("no thermal expansion") :
                design_figure(f.cool_inner_to)
-                 + (!f.cool_reachable ?
+                 + (f.cool_inner_to <= absolute_zero ?
+                      " (not reachable: below absolute zero)" :
+                    !f.cool_reachable ?
                       " (not reachable)" :
                     f.cooling_from_heating ?
                       " (heating coefficient: colder in fact)" :

@@ -745,13 +745,19 @@ namespace coaxfit
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         const Material &m = materials[b];
-        const double    T = operation.temperature_of(b);
-        if (m.temperature_limit > 0. && T > m.temperature_limit)
-          list.push_back("in service " + bodies[b] + " (" + m.name + ") at "
-                         + number(T) + " C is above its temperature limit "
-                         + number(m.temperature_limit) + " C, "
-                         + m.temperature_limit_reason
-                         + ": its strength figures do not hold there");
+        // The state of assembly at the assembly temperature; in service at
+        // the body's own (the same without loads: said once).
+        std::vector<std::pair<std::string, double>> states
+          = {{"at assembly", operation.assembly_temperature}};
+        if (operation.temperature_of(b) != operation.assembly_temperature)
+          states.emplace_back("in service", operation.temperature_of(b));
+        for (const auto &[when, T] : states)
+          if (m.temperature_limit > 0. && T > m.temperature_limit)
+            list.push_back(when + " " + bodies[b] + " (" + m.name + ") at "
+                           + number(T) + " C is above its temperature limit "
+                           + number(m.temperature_limit) + " C, "
+                           + m.temperature_limit_reason
+                           + ": its strength figures do not hold there");
       }
     return list;
   }

@@ -9,6 +9,7 @@
 #include <coaxfit/solvers/body_solver.h>
 #include <coaxfit/solvers/condensed_body.h>
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <memory>
@@ -65,10 +66,10 @@ namespace coaxfit
     bool cool_reachable = true;
     /** @} */
     /**
-     * With a speed of operation: the speed (1/min) at which the joint is
-     * open over its whole length, the other loads as in operation;
-     * infinite if it holds up to 1e6 1/min, NaN if not computed (no speed,
-     * a clearance, bilateral joints).
+     * With a speed of operation: the speed (1/min) from which the joint
+     * is open over its whole length, the other loads as in operation (0:
+     * open at rest); infinite if it holds up to loosening_limit(), NaN if
+     * not computed (no speed, bilateral joints).
      */
     double loosening_speed = std::numeric_limits<double>::quiet_NaN();
   };
@@ -318,12 +319,22 @@ namespace coaxfit
 
     /**
      * Each joint's loosening speed (JointFigures::loosening_speed): the
-     * speeds scanned upwards in steps of 10 % from 100 to 1e6 1/min, the
-     * first at which a joint is open over its whole length bisected to
-     * 1e-6.
+     * speeds scanned upwards in steps of 10 % from 100 1/min to
+     * loosening_limit(), the first at which a joint is open over its
+     * whole length bisected to 1e-6.
      */
     void
     loosening_speeds();
+
+    /**
+     * The highest speed the loosening speeds are sought up to (1/min): 1e6,
+     * or ten times the operating speed if that is more.
+     */
+    double
+    loosening_limit() const
+    {
+      return std::max(1e6, 10. * parameters.operation.speed);
+    }
 
     /** The joining figures of joint @p k into @p f (DIN 7190). */
     void

@@ -1,38 +1,8 @@
 #include <coaxfit/app/stack_fit.h>
-
-#include <cmath>
-#include <sstream>
+#include <coaxfit/parameters/parameter_checks.h>
 
 namespace coaxfit
 {
-  namespace
-  {
-    /** @p x with @p digits significant digits. */
-    std::string
-    figure(const double x, const int digits = 3)
-    {
-      std::ostringstream s;
-      s.precision(digits);
-      s << x;
-      return s.str();
-    }
-
-    /**
-     * `a < b` with as many digits (3 at least) as tell the two apart: a
-     * safety just below its requirement is not printed as `1 < 1`.
-     */
-    std::string
-    below(const double a, const double b)
-    {
-      int digits = 3;
-      while (digits < 15 && figure(a, digits) == figure(b, digits))
-        ++digits;
-      return figure(a, digits) + " < " + figure(b, digits);
-    }
-  } // namespace
-
-
-
   std::vector<std::string>
   StackFit::failed_criteria() const
   {
@@ -68,34 +38,35 @@ namespace coaxfit
                 "the joint " + f.name + " has lost contact over its whole "
                 + "length" + state.when
                 + (f.smoothing_loss > 0. ?
-                     " (U " + figure(f.diametral_interference, 6)
+                     " (U " + number(f.diametral_interference, 6)
                        + " mm, after the smoothing loss U_w "
-                       + figure(f.effective_interference, 6) + " mm)" :
+                       + number(f.effective_interference, 6) + " mm)" :
                      std::string()));
             if (parameters.required_torque > 0.
                 && f.slip_safety < parameters.slip_safety)
-              failed.push_back("slip of the joint " + f.name + state.when
-                               + ": safety against slip "
-                               + below(f.slip_safety, parameters.slip_safety)
-                               + " (Design/Slip safety)");
+              failed.push_back(
+                "slip of the joint " + f.name + state.when
+                + ": safety against slip "
+                + Verdict::below(f.slip_safety, parameters.slip_safety)
+                + " (Design/Slip safety)");
           }
         for (const BodyFigures &f : state.bodies)
           if (f.brittle)
             {
               if (f.tensile_strength > 0.
                   && f.fracture_safety < parameters.fracture_safety)
-                failed.push_back(
-                  "fracture of the brittle " + f.name + state.when
-                  + ": safety against fracture "
-                  + below(f.fracture_safety, parameters.fracture_safety)
-                  + " (Design/Fracture safety)");
+                failed.push_back("fracture of the brittle " + f.name
+                                 + state.when + ": safety against fracture "
+                                 + Verdict::below(f.fracture_safety,
+                                                  parameters.fracture_safety)
+                                 + " (Design/Fracture safety)");
             }
           else if (f.yield_strength > 0.
                    && f.yield_safety < parameters.yield_safety)
-            failed.push_back("yield of the " + f.name + state.when
-                             + ": safety against yield "
-                             + below(f.yield_safety, parameters.yield_safety)
-                             + " (Design/Yield safety)");
+            failed.push_back(
+              "yield of the " + f.name + state.when + ": safety against yield "
+              + Verdict::below(f.yield_safety, parameters.yield_safety)
+              + " (Design/Yield safety)");
       }
     return failed;
   }

@@ -8,16 +8,27 @@ namespace coaxfit
 {
   namespace
   {
-    /** @p x with 3 significant digits. */
+    /** @p x with @p digits significant digits. */
     std::string
-    figure(const double x)
+    figure(const double x, const int digits)
     {
       std::ostringstream text;
-      text.precision(3);
+      text.precision(digits);
       text << x;
       return text.str();
     }
   } // namespace
+
+
+
+  std::string
+  Verdict::below(const double a, const double b)
+  {
+    int digits = 3;
+    while (digits < 15 && figure(a, digits) == figure(b, digits))
+      ++digits;
+    return figure(a, digits) + " < " + figure(b, digits);
+  }
 
 
 
@@ -64,8 +75,7 @@ namespace coaxfit
       if (const auto *s = worst(&OperationAnalysis::State::safety_slip, true))
         if (s->safety_slip < design.slip_safety)
           failed.push_back("slip" + where(*s) + ": safety against slip "
-                           + figure(s->safety_slip) + " < "
-                           + figure(design.slip_safety)
+                           + below(s->safety_slip, design.slip_safety)
                            + " (Design/Slip safety)");
 
     const bool brittle_hub
@@ -79,17 +89,17 @@ namespace coaxfit
         if (const auto *s = worst(safety))
           if (s->*safety < design.yield_safety)
             failed.push_back("yield of the " + part + where(*s)
-                             + ": safety against yield " + figure(s->*safety)
-                             + " < " + figure(design.yield_safety)
+                             + ": safety against yield "
+                             + below(s->*safety, design.yield_safety)
                              + " (Design/Yield safety)");
     if (brittle_hub)
       if (const auto *s = worst(&OperationAnalysis::State::safety_fracture_hub))
         if (s->safety_fracture_hub < design.fracture_safety)
-          failed.push_back("fracture of the brittle hub" + where(*s)
-                           + ": safety against fracture "
-                           + figure(s->safety_fracture_hub) + " < "
-                           + figure(design.fracture_safety)
-                           + " (Design/Fracture safety)");
+          failed.push_back(
+            "fracture of the brittle hub" + where(*s)
+            + ": safety against fracture "
+            + below(s->safety_fracture_hub, design.fracture_safety)
+            + " (Design/Fracture safety)");
 
     // Joining: either way is enough, or both at once (the hub at its
     // limit, the shaft in liquid nitrogen).

@@ -228,6 +228,10 @@ namespace coaxfit
   OperationParameters::validate(const double joint_diameter,
                                 const bool   solid_shaft) const
   {
+    require(assembly_temperature > absolute_zero,
+            "Operation/Assembly temperature",
+            assembly_temperature,
+            "-273.15 < T <= 1000 degrees C");
     check_temperature_entry(shaft_temperature(),
                             shaft_temperature_text,
                             "Operation/Shaft temperature");

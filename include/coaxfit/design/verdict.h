@@ -52,6 +52,14 @@ namespace coaxfit
     std::string
     line() const;
 
+    /**
+     * `a < b` for a safety @p a below its requirement @p b, with as many
+     * significant digits (3 at least) as tell the two apart: a safety just
+     * below its requirement is not printed as `1 < 1`.
+     */
+    static std::string
+    below(double a, double b);
+
     /** One line per failed criterion. */
     std::vector<std::string> failed;
 

@@ -562,7 +562,8 @@ namespace coaxfit
 
 
   StackState
-  StackFit::state_at_speed(const double omega_squared) const
+  StackFit::state_at_speed(const std::vector<FullMatrix<double>> &C,
+                           const double omega_squared) const
   {
     const double omega_squared_operation = parameters.operation.omega_squared();
     std::vector<StackJoint> joints       = stack_joints;
@@ -570,9 +571,6 @@ namespace coaxfit
       for (unsigned int i = 0; i < joints[k].n_points(); ++i)
         joints[k].load_shift[i]
           += (omega_squared - omega_squared_operation) * rotation_shift[k][i];
-    std::vector<FullMatrix<double>> C;
-    for (const auto &c : condensed)
-      C.push_back(c->get_compliance());
     unsigned int set_steps = 0;
     return solve_stack_contact(C, joints, parameters.unilateral, set_steps);
   }
@@ -593,13 +591,17 @@ namespace coaxfit
                           state.contact[k].end(),
                           [](const bool c) { return c; });
     };
+    // The compliances once for all the solves below.
+    std::vector<FullMatrix<double>> C;
+    for (const auto &c : condensed)
+      C.push_back(c->get_compliance());
     const unsigned int  n_joints = stack_joints.size();
     std::vector<double> closed_below(n_joints, 0.),
       open_at(n_joints, std::numeric_limits<double>::infinity());
     // The scan: the first speed at which each joint is wholly open.
     for (double n = 100.; n <= loosening_limit() * 1.0000001; n *= 1.1)
       {
-        const StackState state = state_at_speed(omega_squared(n));
+        const StackState state = state_at_speed(C, omega_squared(n));
         bool             done  = true;
         for (unsigned int k = 0; k < n_joints; ++k)
           if (std::isinf(open_at[k]))
@@ -624,12 +626,12 @@ namespace coaxfit
           }
         // Open already at the first speed scanned: from rest.
         double lo = closed_below[k], hi = open_at[k];
-        if (lo == 0. && open(state_at_speed(0.), k))
+        if (lo == 0. && open(state_at_speed(C, 0.), k))
           hi = 0.;
         while (hi - lo > 1e-6 * hi)
           {
             const double mid = 0.5 * (lo + hi);
-            (open(state_at_speed(omega_squared(mid)), k) ? hi : lo) = mid;
+            (open(state_at_speed(C, omega_squared(mid)), k) ? hi : lo) = mid;
           }
         f.loosening_speed = hi;
       }

@@ -30,6 +30,17 @@ namespace coaxfit
               {"max", number_or_null(f.p_max)}};
     }
 
+    /** The contact of a joint: closed, length, open points, gaps (mm). */
+    Json
+    contact_json(const JointFigures &f)
+    {
+      return {{"closed", f.closed},
+              {"length", f.contact_length},
+              {"separated_points", f.separated_points},
+              {"gap_min", f.gap_min},
+              {"gap_max", f.gap_max}};
+    }
+
     /**
      * The figures of a joint; its safety against slip with @p slip (a
      * required torque given).
@@ -44,11 +55,7 @@ namespace coaxfit
       j["smoothing_loss"]         = f.smoothing_loss;
       j["effective_interference"] = f.effective_interference;
       j["pressure"]               = pressure_json(f);
-      j["contact"]                = {{"closed", f.closed},
-                                     {"length", f.contact_length},
-                                     {"separated_points", f.separated_points},
-                                     {"gap_min", f.gap_min},
-                                     {"gap_max", f.gap_max}};
+      j["contact"]                = contact_json(f);
       j["alone"]                  = {{"pressure",
                                       {{"at_mid_plane", number_or_null(f.alone_p_mid)},
                                        {"mean", number_or_null(f.alone_p_mean)}}},
@@ -248,11 +255,7 @@ namespace coaxfit
             const JointFigures &a = joints_assembly[k];
             Json                assembly;
             assembly["pressure"] = pressure_json(a);
-            assembly["contact"]  = {{"closed", a.closed},
-                                    {"length", a.contact_length},
-                                    {"separated_points", a.separated_points},
-                                    {"gap_min", a.gap_min},
-                                    {"gap_max", a.gap_max}};
+            assembly["contact"]  = contact_json(a);
             if (a.friction_coefficient > 0.)
               {
                 assembly["torque_capacity"] = number_or_null(a.torque_capacity);

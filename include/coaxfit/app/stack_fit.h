@@ -312,10 +312,11 @@ namespace coaxfit
     /**
      * The contact of all joints at the speed whose omega^2 is
      * @p omega_squared ((rad/s)^2), the other loads as in operation
-     * (monolithically on the condensed compliances).
+     * (monolithically on the bodies' condensed compliances @p C).
      */
     StackState
-    state_at_speed(double omega_squared) const;
+    state_at_speed(const std::vector<FullMatrix<double>> &C,
+                   double                                 omega_squared) const;
 
     /**
      * Each joint's loosening speed (JointFigures::loosening_speed): the

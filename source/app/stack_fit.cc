@@ -73,6 +73,28 @@ namespace coaxfit
       return s.str();
     }
 
+    /**
+     * The press-in figures of a joint in words: `press-in force ... N
+     * (made 2nd: Shaft + Sleeve into Hub, p_mean ... MPa, nu_e ...; plane
+     * stress ... N)`.
+     */
+    std::string
+    press_text(const JointFigures &f)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << "press-in force " << f.press_in_force
+        << " N (made " << f.press_order
+        << (f.press_order == 1 ? "st" :
+            f.press_order == 2 ? "nd" :
+            f.press_order == 3 ? "rd" :
+                                 "th")
+        << ": " << part_text(f.press_inner_part) << " into "
+        << part_text(f.press_outer_part) << ", p_mean " << f.press_p_mean
+        << " MPa, nu_e " << f.press_in_friction_coefficient << "; plane stress "
+        << f.press_in_force_estimate << " N)";
+      return s.str();
+    }
+
     /** Seconds since @p start. */
     double
     seconds_since(const std::chrono::steady_clock::time_point start)
@@ -320,22 +342,105 @@ namespace coaxfit
 
 
 
+  std::string
+  part_text(const std::vector<std::string> &part)
+  {
+    std::string s;
+    for (const std::string &b : part)
+      s += (s.empty() ? "" : " + ") + b;
+    return s;
+  }
+
+
+
+  namespace
+  {
+    /** The block of @p C from row and column @p at, @p n of each. */
+    FullMatrix<double>
+    block(const FullMatrix<double> &C,
+          const unsigned int        at,
+          const unsigned int        n)
+    {
+      FullMatrix<double> B(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          B(i, j) = C(at + i, at + j);
+      return B;
+    }
+  } // namespace
+
+
+
+  StackState
+  StackFit::part_assembly(const unsigned int first,
+                          const unsigned int last) const
+  {
+    // Each body's compliance on the points of the joints inside the
+    // part: the first body's bore and the last one's outside are free.
+    std::vector<FullMatrix<double>> C;
+    for (unsigned int b = first; b <= last; ++b)
+      {
+        const unsigned int n_in = b > 0 ? stack_joints[b - 1].n_points() : 0;
+        const unsigned int n_out
+          = b + 1 < bodies.size() ? stack_joints[b].n_points() : 0;
+        const unsigned int at = b == first ? n_in : 0;
+        C.push_back(block(compliance(b),
+                          at,
+                          (b == first ? 0 : n_in) + (b == last ? 0 : n_out)));
+      }
+    // At the assembly temperature: no loads of operation.
+    std::vector<StackJoint> joints(stack_joints.begin() + first,
+                                   stack_joints.begin() + last);
+    for (StackJoint &joint : joints)
+      joint.load_shift.reinit(0);
+    unsigned int set_steps = 0;
+    return solve_stack_contact(C, joints, parameters.unilateral, set_steps);
+  }
+
+
+
+  void
+  StackFit::pressing(const unsigned int k, JointFigures &f) const
+  {
+    const auto [first, last] = parameters.joined_parts(k);
+    f.press_order            = std::find(parameters.joining_order.begin(),
+                              parameters.joining_order.end(),
+                              k)
+                    - parameters.joining_order.begin() + 1;
+    const auto &names  = parameters.bodies;
+    f.press_inner_part = {names.begin() + first, names.begin() + k + 1};
+    f.press_outer_part = {names.begin() + k + 1, names.begin() + last + 1};
+    f.press_in_friction_coefficient
+      = parameters.fits[k].press_in_friction_coefficient;
+    // The part-assembly's joint k is its joint k - first.
+    const StackState   state   = part_assembly(first, last);
+    const StackJoint  &joint   = stack_joints[k];
+    const unsigned int in_part = k - first;
+    f.press_p_mean             = state.force[in_part].mean_value()
+                     * state.force[in_part].size()
+                     / (joint.weights.mean_value() * joint.weights.size());
+    // F = nu_e N, the normal force N = p_mean pi D l over the joint's
+    // length l (twice the half model's).
+    const double area = M_PI * f.diameter * 2. * joint.z.back();
+    f.press_in_force  = f.press_in_friction_coefficient * f.press_p_mean * area;
+    f.press_in_force_estimate
+      = f.press_in_friction_coefficient
+        * plane_stress(first, last, false).pressure(in_part) * area;
+  }
+
+
+
   StackState
   StackFit::joint_alone(const unsigned int k,
                         unsigned int      &staggered_steps) const
   {
     // The sides' compliances on this joint's points only: the other
     // surfaces free.
-    const unsigned int n     = stack_joints[k].n_points();
-    const unsigned int at_in = bodies[k]->n_inner_interface_points();
-    FullMatrix<double> C_in(n, n), C_out(n, n);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          C_in(i, j)  = compliance(k)(at_in + i, at_in + j);
-          C_out(i, j) = compliance(k + 1)(i, j);
-        }
-    const std::vector<StackJoint> pair      = {stack_joints[k]};
+    const unsigned int            n     = stack_joints[k].n_points();
+    const unsigned int            at_in = bodies[k]->n_inner_interface_points();
+    const FullMatrix<double>      C_in  = block(compliance(k), at_in, n);
+    const FullMatrix<double>      C_out = block(compliance(k + 1), 0, n);
+    const std::vector<StackJoint> pair  = {stack_joints[k]};
     unsigned int                  set_steps = 0;
     const StackState              state     = solve_stack_contact({C_in, C_out},
                                                  pair,
@@ -674,9 +779,11 @@ namespace coaxfit
 
   CompoundCylinders
   StackFit::plane_stress(const unsigned int first,
-                         const unsigned int last) const
+                         const unsigned int last,
+                         const bool         loaded) const
   {
-    const StackOperation                &o = parameters.operation;
+    const bool                           with_loads = loaded && has_loads();
+    const StackOperation                &o          = parameters.operation;
     std::vector<CompoundCylinders::Ring> rings;
     for (unsigned int b = first; b <= last; ++b)
       rings.push_back({parameters.rings[b].inner_diameter,
@@ -698,7 +805,7 @@ namespace coaxfit
       {
         const double R = parameters.joint_diameter(k) / 2.;
         U.push_back(parameters.fits[k].diametral_interference
-                    - (has_loads() ?
+                    - (with_loads ?
                          2. * (free_growth(k + 1, R) - free_growth(k, R)) :
                          0.));
       }
@@ -706,8 +813,10 @@ namespace coaxfit
     // the closed form stays closed too.
     return CompoundCylinders(rings,
                              U,
-                             first == 0 ? o.bore_pressure : 0.,
-                             last + 1 == bodies.size() ? o.outer_pressure : 0.,
+                             with_loads && first == 0 ? o.bore_pressure : 0.,
+                             with_loads && last + 1 == bodies.size() ?
+                               o.outer_pressure :
+                               0.,
                              parameters.unilateral);
   }
 
@@ -739,6 +848,7 @@ namespace coaxfit
         f.lame_p       = lame.pressure(k);
         f.lame_alone_p = plane_stress(k, k + 1).pressure(0);
         joining(k, f);
+        pressing(k, f);
         joints_out.push_back(f);
       }
     loosening_speeds();
@@ -950,6 +1060,8 @@ namespace coaxfit
     for (const JointFigures &f : joints_out)
       if (!std::isnan(f.heat_outer_to) || !std::isnan(f.cool_inner_to))
         out << "  " << f.name << ": " << joining_text(f) << '\n';
+    for (const JointFigures &f : joints_out)
+      out << "  " << f.name << ": " << press_text(f) << '\n';
     for (const BodyFigures &f : bodies_out)
       {
         out << "  " << f.name << ": von Mises " << std::setprecision(6)

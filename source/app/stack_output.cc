@@ -71,6 +71,14 @@ namespace coaxfit
       j["joining"]["cooling_from_heating"] = std::isnan(f.cool_inner_to) ?
                                                Json(nullptr) :
                                                Json(f.cooling_from_heating);
+      j["press_in"]
+        = {{"order", f.press_order},
+           {"inner_part", f.press_inner_part},
+           {"outer_part", f.press_outer_part},
+           {"friction_coefficient", f.press_in_friction_coefficient},
+           {"pressure_mean", f.press_p_mean},
+           {"force", f.press_in_force},
+           {"force_plane_stress", f.press_in_force_estimate}};
       if (!std::isnan(f.loosening_speed))
         j["loosening_speed"] = number_or_null(f.loosening_speed);
       j["plane_stress_estimate"]

@@ -184,10 +184,12 @@ namespace coaxfit
                 "torque).\n";
       }
 
-    md << "\n## Joining (DIN 7190)\n\nThe stack built inside out: each "
-          "joint's outer body heated, or its inner body cooled, until the "
-          "largest interference and the joining clearance (Operation/Joining "
-          "clearance) are gone; from the assembly temperature "
+    md << "\n## Joining (DIN 7190)\n\nEach joint's outer part heated, or "
+          "its inner part cooled (the parts as in Pressing below), until "
+          "the largest interference and the joining clearance "
+          "(Operation/Joining clearance) are gone, with the coefficient of "
+          "the joint's own body (exact where that part is the body alone or "
+          "its bodies expand alike); from the assembly temperature "
        << design_figure(p.operation.assembly_temperature)
        << " C. Cooling below -196 C (liquid nitrogen) is not reachable.\n\n"
           "| joint | U_max mm | clearance mm | heat the outer body to C | "
@@ -211,6 +213,29 @@ namespace coaxfit
                       " (heating coefficient: colder in fact)" :
                       ""))
          << " |\n";
+
+    md << "\n## Pressing (Assembly/Order: " << p.order_text
+       << ")\n\nEach joint pressed lengthwise at the assembly temperature: "
+          "its inner part (the bodies already joined to its inner body) "
+          "into its outer part. The press-in force is F = nu_e p_mean pi D "
+          "l, p_mean the joint's mean pressure in the part-assembly present "
+          "then (the other bodies removed, the same meshes), at the "
+          "interference in use (Fit/Case "
+       << p.fit_case
+       << "); the estimate takes the plane-stress compound cylinders of the "
+          "same part-assembly.\n\n"
+          "| joint | made | pressed | into | p_mean MPa | nu_e | force N | "
+          "estimate N |\n|---|---|---|---|---|---|---|---|\n";
+    for (const JointFigures &f : joints_out)
+      {
+        md << "| " << f.name << " | " << f.press_order << " | "
+           << part_text(f.press_inner_part) << " | "
+           << part_text(f.press_outer_part) << " | "
+           << design_figure(f.press_p_mean) << " | "
+           << design_figure(f.press_in_friction_coefficient) << " | "
+           << design_figure(f.press_in_force) << " | "
+           << design_figure(f.press_in_force_estimate) << " |\n";
+      }
 
     md << "\n## Strength of the bodies\n\nOn the bodies' joint and free "
           "surfaces, MPa; the safeties at the mid-plane.\n\n"

@@ -210,7 +210,72 @@ namespace coaxfit
                        + " is no entry of a stack of these bodies (allowed: "
                        + list + ")");
     }
+
+    /**
+     * The joints of @p p in the order they are made, from Assembly/Order:
+     * `inside out`, `outside in`, or every joint named once.
+     */
+    std::vector<unsigned int>
+    joining_order(const StackParameters &p)
+    {
+      const unsigned int        n = p.n_joints();
+      std::vector<unsigned int> order;
+      const std::string         text = trim(p.order_text);
+      if (text == "inside out" || text == "outside in")
+        {
+          for (unsigned int k = 0; k < n; ++k)
+            order.push_back(text == "inside out" ? k : n - 1 - k);
+          return order;
+        }
+      std::string joints;
+      for (unsigned int k = 0; k < n; ++k)
+        joints += (k > 0 ? ", " : "") + p.joint_name(k);
+      const std::string  entry = "parameter Assembly/Order = '" + text + "'";
+      std::istringstream in(text);
+      std::string        name;
+      while (std::getline(in, name, ','))
+        {
+          name               = trim(name);
+          unsigned int known = n;
+          for (unsigned int k = 0; k < n; ++k)
+            if (p.joint_name(k) == name)
+              known = k;
+          if (known == n)
+            throw InputError(entry + ": '" + name
+                             + "' is not a joint of Assembly/Bodies (allowed: "
+                               "inside out, outside in, or each of the joints "
+                             + joints + " once, in the order they are made)");
+          if (std::find(order.begin(), order.end(), known) != order.end())
+            throw InputError(entry + " names the joint " + name
+                             + " twice (each of " + joints + " once)");
+          order.push_back(known);
+        }
+      for (unsigned int k = 0; k < n; ++k)
+        if (std::find(order.begin(), order.end(), k) == order.end())
+          throw InputError(entry + " does not name the joint " + p.joint_name(k)
+                           + " (each of " + joints
+                           + " once, in the order they are made)");
+      return order;
+    }
   } // namespace
+
+
+
+  std::pair<unsigned int, unsigned int>
+  StackParameters::joined_parts(const unsigned int k) const
+  {
+    // Joint k is made after the joints before it in joining_order.
+    const auto at   = std::find(joining_order.begin(), joining_order.end(), k);
+    const auto made = [&](const unsigned int j) {
+      return std::find(joining_order.begin(), at, j) != at;
+    };
+    unsigned int first = k, last = k + 1;
+    while (first > 0 && made(first - 1))
+      --first;
+    while (last + 1 < bodies.size() && made(last))
+      ++last;
+    return {first, last};
+  }
 
 
 
@@ -297,6 +362,19 @@ namespace coaxfit
                           "in the model. 0: not given (no torque figures). "
                           "Allowed: 0 to 1.",
                       Patterns::Double(0., 1.));
+    // Fit's own value has a default; a joint's 0 takes Fit's.
+    const bool joint_entry = press_in_friction_coefficient == 0.;
+    prm.add_parameter(
+      "Press-in friction coefficient",
+      press_in_friction_coefficient,
+      "Coefficient of sliding friction while " + what
+        + " is pressed lengthwise (DIN 7190's nu_e), for its press-in force "
+          "F = nu_e p_mean pi D l, p_mean the joint's pressure in the "
+          "part-assembly present when it is pressed (Assembly/Order), at the "
+          "interference in use (the largest with Case = max)."
+        + (joint_entry ? " 0: Fit's value. Allowed: 0 to 1." :
+                         " Allowed: 1e-6 to 1."),
+      Patterns::Double(joint_entry ? 0. : 1e-6, 1.));
   }
 
 
@@ -356,6 +434,17 @@ namespace coaxfit
       "outer`, separated by commas, e.g. `Bushing bore` for the running "
       "clearance of a pressed-in bushing. Empty: none.",
       Patterns::List(Patterns::Anything()));
+    prm.add_parameter(
+      "Order",
+      order_text,
+      "The order in which the joints are made, for each joint's press-in "
+      "force (the pressure of the part-assembly present when it is "
+      "pressed): inside out (each body pressed onto the bodies inside it: "
+      "a sleeve onto its shaft, then the hub onto both), outside in (a "
+      "bushing pressed into its housing, then the shaft into the bushing), "
+      "or every joint named once in the order it is made, separated by "
+      "commas (for example Sleeve-Hub, Shaft-Sleeve).",
+      Patterns::Anything());
     prm.leave_subsection();
 
     prm.enter_subsection("Geometry");
@@ -383,6 +472,7 @@ namespace coaxfit
                       "takes (every joint the same): min, mean or max. "
                       "Joints given a Diametral interference take it.",
                       Patterns::Selection("min|mean|max"));
+    default_fit.press_in_friction_coefficient = 0.08;
     default_fit.declare_parameters(prm,
                                    "every joint that does not give its own "
                                    "(Fit/<inner>-<outer>)");
@@ -977,12 +1067,16 @@ namespace coaxfit
                                      p.default_fit.friction_coefficient;
         // So does a roughness; the smoothing loss (DIN 7190-1) is taken
         // off the nominal interference.
-        fit.inner_roughness      = entries.inner_roughness > 0. ?
-                                     entries.inner_roughness :
-                                     p.default_fit.inner_roughness;
-        fit.outer_roughness      = entries.outer_roughness > 0. ?
-                                     entries.outer_roughness :
-                                     p.default_fit.outer_roughness;
+        fit.inner_roughness = entries.inner_roughness > 0. ?
+                                entries.inner_roughness :
+                                p.default_fit.inner_roughness;
+        fit.outer_roughness = entries.outer_roughness > 0. ?
+                                entries.outer_roughness :
+                                p.default_fit.outer_roughness;
+        fit.press_in_friction_coefficient
+          = entries.press_in_friction_coefficient > 0. ?
+              entries.press_in_friction_coefficient :
+              p.default_fit.press_in_friction_coefficient;
         fit.nominal_interference = fit.diametral_interference;
         if (fit.iso_fit.empty())
           fit.largest_interference = fit.diametral_interference;
@@ -1011,6 +1105,7 @@ namespace coaxfit
     for (const std::string &text : p.operation.temperature_text)
       p.operation.temperature.push_back(
         temperature_entry(text, p.operation.assembly_temperature));
+    p.joining_order = joining_order(p);
     p.validate();
 
     // The written parameters must repeat the run: the values a material

@@ -49,9 +49,10 @@ namespace coaxfit
     double       torque_capacity;      ///< N m (friction given)
     double       slip_safety;          ///< over Design/Required torque; 0: none
     /**
-     * @name Joining (DIN 7190), the stack built inside out: the outer body
-     * of the joint heated, or the inner one cooled, until the largest
-     * interference plus the joining clearance is gone.
+     * @name Joining (DIN 7190): the outer part of the joint heated, or the
+     * inner one cooled (the parts of Assembly/Order), until the largest
+     * interference plus the joining clearance is gone, with the
+     * coefficient of the joint's own body.
      */
     /** @{ */
     double joining_interference = 0.; ///< mm, the largest U
@@ -66,6 +67,20 @@ namespace coaxfit
     bool cool_reachable = true;
     /** @} */
     /**
+     * @name Pressing (Assembly/Order): the joint made by pressing its inner
+     * part (the bodies already joined to its inner body) into its outer
+     * part, at the assembly temperature.
+     */
+    /** @{ */
+    unsigned int             press_order = 0; ///< 1: made first
+    std::vector<std::string> press_inner_part, press_outer_part;
+    double                   press_in_friction_coefficient = 0.; ///< nu_e
+    double                   press_p_mean   = 0.; ///< MPa, in the part-assembly
+    double                   press_in_force = 0.; ///< N, nu_e p_mean pi D l
+    /** N, from the plane-stress compound cylinders of the part-assembly. */
+    double press_in_force_estimate = 0.;
+    /** @} */
+    /**
      * With a speed of operation: the speed (1/min) from which the joint
      * is open over its whole length, the other loads as in operation (0:
      * open at rest); infinite if it holds up to loosening_limit(), NaN if
@@ -73,6 +88,10 @@ namespace coaxfit
      */
     double loosening_speed = std::numeric_limits<double>::quiet_NaN();
   };
+
+  /** The bodies of a part-assembly joined by ` + ` (`Shaft + Sleeve`). */
+  std::string
+  part_text(const std::vector<std::string> &part);
 
   /**
    * The strength figures of one body of a stack after joining: the largest
@@ -302,12 +321,15 @@ namespace coaxfit
 
     /**
      * The plane-stress compound cylinders of bodies @p first to @p last
-     * with their loads of operation (if the stack has them): the
+     * with their loads of operation (if the stack has them and
+     * @p loaded): the
      * interferences less the free rings' growth apart, the pressures on
      * the free surfaces of the whole stack.
      */
     CompoundCylinders
-    plane_stress(unsigned int first, unsigned int last) const;
+    plane_stress(unsigned int first,
+                 unsigned int last,
+                 bool         loaded = true) const;
 
     /**
      * The contact of all joints at the speed whose omega^2 is
@@ -341,6 +363,19 @@ namespace coaxfit
     void
     joining(unsigned int k, JointFigures &f) const;
 
+    /**
+     * The contact of the part-assembly of bodies @p first to @p last at
+     * the assembly temperature (the others removed, the same meshes),
+     * monolithically on the bodies' compliances on its joints' points.
+     */
+    StackState
+    part_assembly(unsigned int first, unsigned int last) const;
+    /**
+     * The press-in figures of joint @p k into @p f: its pressure in the
+     * part-assembly present when it is pressed (Assembly/Order).
+     */
+    void
+    pressing(unsigned int k, JointFigures &f) const;
     /** The two bodies of joint @p k alone: their contact, and steps. */
     StackState
     joint_alone(unsigned int k, unsigned int &staggered_steps) const;

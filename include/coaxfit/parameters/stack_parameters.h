@@ -46,11 +46,16 @@ namespace coaxfit
     double outer_roughness        = 0.; ///< Rz of the outer body's bore, um
     double nominal_interference   = 0.; ///< U as given (derived), mm
     /** The largest interference (mm, derived): an ISO fit's, else U. */
-    double      largest_interference = 0.;
-    double      smoothing_loss       = 0.; ///< 0.8 (Rz_i + Rz_o), mm
-    double      friction_coefficient = 0.; ///< 0: not given (no torque figures)
-    std::string iso_fit;                   ///< `H7/s6`; empty: none
-    std::string source; ///< where the interference comes from (derived)
+    double largest_interference = 0.;
+    double smoothing_loss       = 0.; ///< 0.8 (Rz_i + Rz_o), mm
+    double friction_coefficient = 0.; ///< 0: not given (no torque figures)
+    /**
+     * DIN 7190's nu_e while the joint is pressed lengthwise, for its
+     * press-in force; 0 in a joint's own entries: Fit's.
+     */
+    double      press_in_friction_coefficient = 0.;
+    std::string iso_fit; ///< `H7/s6`; empty: none
+    std::string source;  ///< where the interference comes from (derived)
 
     /** Declare the entries of a `Fit` subsection (@p what: for whom). */
     void
@@ -157,6 +162,13 @@ namespace coaxfit
      * the same): min, mean or max.
      */
     std::string fit_case = "mean";
+    /**
+     * `Assembly/Order` as given: `inside out`, `outside in` or the joints
+     * in the order they are made.
+     */
+    std::string order_text = "inside out";
+    /** The joints in the order they are made (derived from order_text). */
+    std::vector<unsigned int> joining_order;
     /** Surfaces whose radial displacement is reported (`<body> bore`). */
     std::vector<std::string> report_surfaces;
     /** The loads of operation (`Operation`). */
@@ -200,6 +212,13 @@ namespace coaxfit
       return rings[k].outer_diameter;
     }
 
+    /**
+     * The part-assemblies joint @p k joins when it is made (Assembly/Order):
+     * the bodies first to k already joined to its inner body and k + 1 to
+     * last to its outer one.
+     */
+    std::pair<unsigned int, unsigned int>
+    joined_parts(unsigned int k) const;
     /** Declare every entry for the bodies in @p bodies (sized first). */
     void
     declare_parameters(ParameterHandler &prm);

@@ -16,7 +16,11 @@
 // 3. What the order must give in any stack: the joint made last is pressed
 //    into the whole assembly (its pressure there), the joint made first
 //    into its two bodies alone (the pressure of the joint alone), to 1e-12.
-// 4. Bad orders and coefficients: one line naming the entry, exit 1,
+// 4. ISO fits at Fit/Case = min: the force at the interferences in use and
+//    the force at every joint's largest interference (what the press must
+//    give), each against the closed form with ISO 286's limits (H7/s6 at
+//    D 60: 23 to 72 um; H7/u6 at D 90: 89 to 146 um), to 1e-6.
+// 5. Bad orders and coefficients: one line naming the entry, exit 1,
 //    nothing written.
 
 #include <coaxfit/design/compound_cylinders.h>
@@ -275,7 +279,35 @@ main()
               {{0, 4}, {1, 2}, {1, 4}, {3, 4}},
               {0.1, 0.1, 0.1, 0.1});
 
-  // Part 4: bad orders and coefficients.
+  // Part 4: ISO fits, the smallest interferences in use, inside out.
+  {
+    std::ofstream("iso.prm")
+      << stack_prm(three,
+                   {},
+                   "inside out",
+                   "  set Case = min\n  subsection Shaft-Sleeve\n"
+                   "    set ISO fit = H7/s6\n  end\n"
+                   "  subsection Sleeve-Hub\n    set ISO fit = H7/u6\n  end\n");
+    std::filesystem::remove_all("iso");
+    const RunResult      r = run_coaxfit("iso", quiet + "iso.prm");
+    const nlohmann::json s = read_summary("iso");
+    std::cout << "iso (H7/s6, H7/u6, Case min): exit " << r.exit_code << '\n';
+    const std::vector<double> U_min = {0.023, 0.089}, U_max = {0.072, 0.146};
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const nlohmann::json &p    = s["joints"][k]["press_in"];
+        const double          area = 0.08 * M_PI * three[k].d_out * length;
+        const double used    = area * part(three, U_min, 0, k + 1).pressure(k);
+        const double largest = area * part(three, U_max, 0, k + 1).pressure(k);
+        std::cout << "  " << s["joints"][k]["name"].get<std::string>()
+                  << ": force " << used << " N "
+                  << agreement(p["force"], used, 1e-6)
+                  << ", at the largest interferences " << largest << " N "
+                  << agreement(p["force_largest"], largest, 1e-6) << '\n';
+      }
+  }
+
+  // Part 5: bad orders and coefficients.
   const std::vector<std::pair<std::string, std::string>> bad = {
     {"a joint missing", "--set 'Assembly/Order=Shaft-Sleeve' inside_out.prm"},
     {"a joint twice",

@@ -92,6 +92,10 @@ namespace coaxfit
         << part_text(f.press_outer_part) << ", p_mean " << f.press_p_mean
         << " MPa, nu_e " << f.press_in_friction_coefficient << "; plane stress "
         << f.press_in_force_estimate << " N)";
+      if (std::abs(f.press_in_force_largest - f.press_in_force)
+          > 1e-9 * f.press_in_force_largest)
+        s << ", " << f.press_in_force_largest
+          << " N at the largest interferences";
       return s.str();
     }
 
@@ -373,7 +377,8 @@ namespace coaxfit
 
   StackState
   StackFit::part_assembly(const unsigned int first,
-                          const unsigned int last) const
+                          const unsigned int last,
+                          const bool         largest) const
   {
     // Each body's compliance on the points of the joints inside the
     // part: the first body's bore and the last one's outside are free.
@@ -391,8 +396,17 @@ namespace coaxfit
     // At the assembly temperature: no loads of operation.
     std::vector<StackJoint> joints(stack_joints.begin() + first,
                                    stack_joints.begin() + last);
-    for (StackJoint &joint : joints)
-      joint.load_shift.reinit(0);
+    for (unsigned int j = first; j < last; ++j)
+      {
+        StackJoint &joint = joints[j - first];
+        joint.load_shift.reinit(0);
+        // The largest effective interference: U_max less the smoothing
+        // loss (radial).
+        if (largest)
+          joint.interference = 0.5
+                               * (parameters.fits[j].largest_interference
+                                  - parameters.fits[j].smoothing_loss);
+      }
     unsigned int set_steps = 0;
     return solve_stack_contact(C, joints, parameters.unilateral, set_steps);
   }
@@ -413,16 +427,20 @@ namespace coaxfit
     f.press_in_friction_coefficient
       = parameters.fits[k].press_in_friction_coefficient;
     // The part-assembly's joint k is its joint k - first.
-    const StackState   state   = part_assembly(first, last);
     const StackJoint  &joint   = stack_joints[k];
     const unsigned int in_part = k - first;
-    f.press_p_mean             = state.force[in_part].mean_value()
-                     * state.force[in_part].size()
-                     / (joint.weights.mean_value() * joint.weights.size());
+    const auto         p_mean  = [&](const StackState &state) {
+      return state.force[in_part].mean_value() * state.force[in_part].size()
+             / (joint.weights.mean_value() * joint.weights.size());
+    };
+    f.press_p_mean = p_mean(part_assembly(first, last, false));
     // F = nu_e N, the normal force N = p_mean pi D l over the joint's
     // length l (twice the half model's).
     const double area = M_PI * f.diameter * 2. * joint.z.back();
     f.press_in_force  = f.press_in_friction_coefficient * f.press_p_mean * area;
+    f.press_in_force_largest = f.press_in_friction_coefficient
+                               * p_mean(part_assembly(first, last, true))
+                               * area;
     f.press_in_force_estimate
       = f.press_in_friction_coefficient
         * plane_stress(first, last, false).pressure(in_part) * area;

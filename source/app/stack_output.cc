@@ -78,7 +78,8 @@ namespace coaxfit
            {"friction_coefficient", f.press_in_friction_coefficient},
            {"pressure_mean", f.press_p_mean},
            {"force", f.press_in_force},
-           {"force_plane_stress", f.press_in_force_estimate}};
+           {"force_plane_stress", f.press_in_force_estimate},
+           {"force_largest", f.press_in_force_largest}};
       if (!std::isnan(f.loosening_speed))
         j["loosening_speed"] = number_or_null(f.loosening_speed);
       j["plane_stress_estimate"]

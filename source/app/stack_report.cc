@@ -223,9 +223,12 @@ namespace coaxfit
           "interference in use (Fit/Case "
        << p.fit_case
        << "); the estimate takes the plane-stress compound cylinders of the "
-          "same part-assembly.\n\n"
+          "same part-assembly. The last column has every joint of the "
+          "part-assembly at its largest interference (an ISO fit's U_max "
+          "less the smoothing loss): the force the press must give.\n\n"
           "| joint | made | pressed | into | p_mean MPa | nu_e | force N | "
-          "estimate N |\n|---|---|---|---|---|---|---|---|\n";
+          "estimate N | at the largest interferences N |\n"
+          "|---|---|---|---|---|---|---|---|---|\n";
     for (const JointFigures &f : joints_out)
       {
         md << "| " << f.name << " | " << f.press_order << " | "
@@ -234,7 +237,8 @@ namespace coaxfit
            << design_figure(f.press_p_mean) << " | "
            << design_figure(f.press_in_friction_coefficient) << " | "
            << design_figure(f.press_in_force) << " | "
-           << design_figure(f.press_in_force_estimate) << " |\n";
+           << design_figure(f.press_in_force_estimate) << " | "
+           << design_figure(f.press_in_force_largest) << " |\n";
       }
 
     md << "\n## Strength of the bodies\n\nOn the bodies' joint and free "

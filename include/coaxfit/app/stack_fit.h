@@ -79,6 +79,12 @@ namespace coaxfit
     double                   press_in_force = 0.; ///< N, nu_e p_mean pi D l
     /** N, from the plane-stress compound cylinders of the part-assembly. */
     double press_in_force_estimate = 0.;
+    /**
+     * N, with every joint of the part-assembly at its largest interference
+     * (an ISO fit's U_max less the smoothing loss): what the press must
+     * give.
+     */
+    double press_in_force_largest = 0.;
     /** @} */
     /**
      * With a speed of operation: the speed (1/min) from which the joint
@@ -366,10 +372,12 @@ namespace coaxfit
     /**
      * The contact of the part-assembly of bodies @p first to @p last at
      * the assembly temperature (the others removed, the same meshes),
-     * monolithically on the bodies' compliances on its joints' points.
+     * monolithically on the bodies' compliances on its joints' points;
+     * its joints at their largest interferences if @p largest, else at
+     * those in use.
      */
     StackState
-    part_assembly(unsigned int first, unsigned int last) const;
+    part_assembly(unsigned int first, unsigned int last, bool largest) const;
     /**
      * The press-in figures of joint @p k into @p f: its pressure in the
      * part-assembly present when it is pressed (Assembly/Order).

@@ -308,19 +308,30 @@ main()
        {"Hub", 90., 160., 40., 70000., 0.33, 23e-6, 2700., 35.}};
   check_lame_state("three_rings_hot", three, {0.04, 0.06}, 30., 5.);
   {
-    // DIN 7190's joining temperatures of the hub's joint: the hub heated
-    // by (U + 0.001 D) / (alpha_hub D), the sleeve cooled by the same over
+    // DIN 7190's joining temperatures of the hub's joint, made after the
+    // core's (Assembly/Order inside out): the sleeve's outside has grown
+    // by 2 u_r(45) of the core and sleeve alone (the closed form, at
+    // assembly), which adds to U; the hub heated by (U + growth + 0.001 D)
+    // / (alpha_hub D), the core and sleeve cooled by the same over
     // alpha_sleeve (no cooling coefficient given).
-    const nlohmann::json j       = read_summary("three_rings_hot")["joints"][1];
-    const double         open_up = 0.06 + 0.09;
-    std::cout << "  Sleeve-Hub joining: heat the hub to "
+    const nlohmann::json j = read_summary("three_rings_hot")["joints"][1];
+    const coaxfit::CompoundCylinders core_and_sleeve(
+      {{20., 60., 210000., 0.3}, {60., 90., 110000., 0.34}}, {0.04}, 0., 0.);
+    const double growth  = 2. * core_and_sleeve.radial_displacement(1, 45.);
+    const double open_up = 0.06 + growth + 0.09;
+    std::cout << "  Sleeve-Hub joining: the sleeve's outside grown by "
+              << std::setprecision(6) << growth << " mm exact: "
+              << agreement(j["joining"]["interference_from_parts"],
+                           growth,
+                           1e-6)
+              << "; heat the hub to "
               << agreement(j["joining"]["heat_outer_to"],
                            20. + open_up / (23e-6 * 90.),
-                           1e-12)
-              << ", or cool the sleeve to "
+                           1e-6)
+              << ", or cool the core and sleeve to "
               << agreement(j["joining"]["cool_inner_to"],
                            20. - open_up / (18e-6 * 90.),
-                           1e-12)
+                           1e-6)
               << '\n';
   }
   const std::vector<Ring> five

@@ -16,6 +16,10 @@
 // 3. What the order must give in any stack: the joint made last is pressed
 //    into the whole assembly (its pressure there), the joint made first
 //    into its two bodies alone (the pressure of the joint alone), to 1e-12.
+//    The joining temperatures take what the parts joined before add to
+//    the interference (the inner part's outside grown, the outer part's
+//    bore closed): against the closed form's displacements of those parts,
+//    to 1e-5.
 // 4. ISO fits at Fit/Case = min: the force at the interferences in use and
 //    the force at every joint's largest interference (what the press must
 //    give), each against the closed form with ISO 286's limits (H7/s6 at
@@ -150,6 +154,24 @@ namespace
                   << force << " N " << agreement(p["force"], force, 1e-6)
                   << ", estimate "
                   << agreement(p["force_plane_stress"], force, 1e-12) << '\n';
+        // What the parts add to the interference before the joint is made:
+        // the inner part's outside grown, the outer part's bore closed.
+        const double R      = rings[k].d_out / 2.;
+        double       growth = 0.;
+        if (k > first)
+          growth
+            += 2. * part(rings, U, first, k).radial_displacement(k - first, R);
+        if (last > k + 1)
+          growth -= 2. * part(rings, U, k + 1, last).radial_displacement(0, R);
+        std::cout << "    joining: the parts add " << growth << " mm exact: "
+                  << (growth == 0. ?
+                        (j["joining"]["interference_from_parts"] == 0. ?
+                           std::string("agrees") :
+                           std::string("DIFFERS")) :
+                        agreement(j["joining"]["interference_from_parts"],
+                                  growth,
+                                  1e-5))
+                  << '\n';
       }
     // Part 3: the last joint made is pressed into the whole assembly, the
     // first into its two bodies alone.
@@ -307,6 +329,27 @@ main()
       }
   }
 
+  // Bilateral joints (Contact/Unilateral = false): a clearance pressed in
+  // does not bond, its force is 0 and the next joint's is that of its
+  // outer part alone.
+  {
+    std::filesystem::remove_all("bilateral");
+    const RunResult r = run_coaxfit(
+      "bilateral",
+      quiet
+        + "--set Contact/Unilateral=false --set "
+          "'Fit/Shaft-Sleeve/Diametral interference=-0.03' inside_out.prm");
+    const nlohmann::json s = read_summary("bilateral");
+    std::cout << "bilateral with a clearance: exit " << r.exit_code
+              << "; Shaft-Sleeve force "
+              << s["joints"][0]["press_in"]["force"].get<double>()
+              << " N; Sleeve-Hub p_mean "
+              << agreement(s["joints"][1]["press_in"]["pressure_mean"],
+                           part(three, U3, 1, 2).pressure(0),
+                           1e-6)
+              << '\n';
+  }
+
   // Part 5: bad orders and coefficients.
   const std::vector<std::pair<std::string, std::string>> bad = {
     {"a joint missing", "--set 'Assembly/Order=Shaft-Sleeve' inside_out.prm"},
@@ -316,6 +359,12 @@ main()
     {"no such joint",
      "--set 'Assembly/Order=Shaft-Hub, Sleeve-Hub' inside_out.prm"},
     {"a misspelt keyword", "--set 'Assembly/Order=outside-in' inside_out.prm"},
+    {"a trailing comma",
+     "--set 'Assembly/Order=Shaft-Sleeve, Sleeve-Hub,' inside_out.prm"},
+    {"Fit/Case max without an ISO fit", "--set Fit/Case=max inside_out.prm"},
+    {"a joint's coefficient below 1e-6",
+     "--set 'Fit/Sleeve-Hub/Press-in friction coefficient=1e-9' "
+     "inside_out.prm"},
     {"no friction while pressing",
      "--set 'Fit/Press-in friction coefficient=0' inside_out.prm"},
     {"a joint's coefficient above 1",

@@ -467,8 +467,7 @@ main()
         std::string("--set 'Fit/Shaft-Sleeve/Diametral interference=-0.5' "
                     "--set 'Fit/Inner roughness Rz=400'"),
         std::string("--set 'Design/Fracture safety=nan'"),
-        std::string(
-          "--sweep 'Fit/Sleeve-Hub/Diametral interference=0.05:0.07:3'")})
+        std::string("--sweep 'Assembly/Bodies=Shaft, Hub'")})
     {
       std::filesystem::remove_all("bad");
       const RunResult r       = run_coaxfit("bad", arguments + " " + example);

@@ -9,6 +9,7 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/base/interruption.h>
 #include <coaxfit/io/result_directory.h>
+#include <coaxfit/io/result_writers.h>
 
 #include <cerrno>
 #include <chrono>
@@ -495,20 +496,6 @@ namespace coaxfit
         }
     }
 
-    std::string
-    csv_field(const std::string &text)
-    {
-      if (text.find_first_of(",\"\n") == std::string::npos)
-        return text;
-      std::string quoted = "\"";
-      for (const char ch : text)
-        {
-          if (ch == '"')
-            quoted += '"';
-          quoted += (ch == '\n' ? ' ' : ch);
-        }
-      return quoted + '"';
-    }
   } // namespace
 
 

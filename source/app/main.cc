@@ -3,6 +3,7 @@
 #include <coaxfit/app/plastic_fit.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/app/stack_fit.h>
+#include <coaxfit/app/stack_sweep.h>
 #include <coaxfit/app/usage.h>
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/base/interruption.h>
@@ -351,7 +352,12 @@ namespace
         else if (line.action == CommandLine::Action::print_parameters)
           try
             {
-              print_parameters(std::cout);
+              // With a file of several bodies: that stack's entries.
+              if (!line.filenames.empty()
+                  && !assembly_bodies(line.filenames[0], {}).empty())
+                print_stack_parameters(std::cout, line.filenames[0]);
+              else
+                print_parameters(std::cout);
             }
           catch (const std::exception &) // deal.II's ExcIO
             {
@@ -365,20 +371,29 @@ namespace
 
         check_standard_output_usable();
         const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
-        // A file of several bodies (Assembly/Bodies) runs on its own.
+        // A file of several bodies (Assembly/Bodies) runs on its own or
+        // in a --sweep.
         const std::vector<std::string> bodies
           = assembly_bodies(line.filenames[0], line.overrides);
-        if (!bodies.empty() && (line.sweep || line.filenames.size() > 1))
-          throw InputError(
-            "parameter file '" + line.filenames[0]
-            + "' names several bodies (Assembly/Bodies): such a file runs on "
-              "its own in this version (no --sweep, no several files)");
-        for (std::size_t i = 1; i < line.filenames.size(); ++i)
-          if (!assembly_bodies(line.filenames[i], line.overrides).empty())
+        for (std::size_t i = 0; i < line.filenames.size(); ++i)
+          if (line.filenames.size() > 1
+              && !assembly_bodies(line.filenames[i], line.overrides).empty())
             throw InputError(
               "parameter file '" + line.filenames[i]
               + "' names several bodies (Assembly/Bodies): such a file runs "
-                "on its own in this version (no --sweep, no several files)");
+                "on its own or in a --sweep in this version (not one of "
+                "several files)");
+        if (!bodies.empty() && line.sweep)
+          {
+            const int code = StackSweep(line.filenames[0],
+                                        line.overrides,
+                                        SweepSpec::parse(*line.sweep),
+                                        !line.quiet,
+                                        std::cout)
+                               .run();
+            check_standard_output();
+            return code;
+          }
         if (!bodies.empty())
           {
             const StackParameters parameters

@@ -50,20 +50,6 @@ namespace coaxfit
       return text.size() > 60 ? text.substr(0, 57) + "..." : text;
     }
 
-    /** A file name for a value: letters, digits and . + - = only. */
-    std::string
-    directory_name(const unsigned int index, const std::string &value)
-    {
-      std::ostringstream name;
-      name << std::setw(2) << std::setfill('0') << index + 1 << '_';
-      for (const char c : value)
-        name << ((std::isalnum(static_cast<unsigned char>(c)) || c == '.'
-                  || c == '+' || c == '-' || c == '=') ?
-                   c :
-                 c == '/' ? '-' :
-                            '_');
-      return name.str().substr(0, 64);
-    }
   } // namespace
 
 
@@ -123,6 +109,80 @@ namespace coaxfit
                            + ": give from 1 to 1000 values");
       }
     return spec;
+  }
+
+
+
+  std::string
+  SweepSpec::directory_name(const unsigned int index) const
+  {
+    std::ostringstream name;
+    name << std::setw(2) << std::setfill('0') << index + 1 << '_';
+    for (const char c : values[index])
+      name << ((std::isalnum(static_cast<unsigned char>(c)) || c == '.'
+                || c == '+' || c == '-' || c == '=') ?
+                 c :
+               c == '/' ? '-' :
+                          '_');
+    return name.str().substr(0, 64);
+  }
+
+
+
+  std::set<std::string>
+  SweepSpec::study_entries(const std::string &study) const
+  {
+    // A run's files (in the value subdirectories), the table and plot,
+    // and the value subdirectories of this study and of an earlier one
+    // (recognized by its sweep.csv).
+    std::set<std::string> allowed = all_result_file_names();
+    for (const std::string name : {"sweep.csv", "sweep.png", "sweep.gp"})
+      allowed.insert(name);
+    for (unsigned int i = 0; i < values.size(); ++i)
+      allowed.insert(directory_name(i));
+    std::error_code error;
+    if (fs::is_regular_file(study + "/sweep.csv", error))
+      for (const auto &entry : fs::directory_iterator(study, error))
+        {
+          const std::string name = entry.path().filename().string();
+          if (entry.is_directory() && name.size() > 3
+              && std::isdigit(static_cast<unsigned char>(name[0]))
+              && name.find('_') != std::string::npos)
+            allowed.insert(name);
+        }
+    return allowed;
+  }
+
+
+
+  std::string
+  SweepSpec::draw(const std::string &directory,
+                  const std::string &size,
+                  const std::string &plots,
+                  const std::string &what) const
+  {
+    std::ostringstream gp;
+    gp << "# coaxfit: gnuplot script of the sweep's plot; run it here with "
+          "'gnuplot sweep.gp'\n"
+       << "set terminal pngcairo size " << size << " font ',11'\n"
+       << "set output 'sweep.png'\n"
+       << "set datafile separator ','\n"
+       << "set datafile missing ''\n"
+       << "set grid\n"
+       << "set xlabel '" << entry << "' noenhanced\n"
+       << plots;
+    std::ofstream script = open_result_file(directory + "/sweep.gp");
+    script << gp.str();
+    close_result_file(script, directory + "/sweep.gp");
+    const std::string problem = run_gnuplot(directory, "sweep.gp");
+    if (!problem.empty())
+      {
+        std::remove((directory + "/sweep.png").c_str());
+        return "sweep.png skipped: " + problem;
+      }
+    check_complete_png(directory + "/sweep.png");
+    return "sweep.png: " + what + " against " + entry
+           + " (sweep.gp redraws it)";
   }
 
 
@@ -204,29 +264,11 @@ namespace coaxfit
     const std::string study
       = normalized_directory(base.output_directory()) + "_sweep";
 
-    // What the study directory may hold: a run's files (in the value
-    // subdirectories), the table and plot, and the value subdirectories of
-    // this study and of an earlier one (recognized by its sweep.csv).
-    std::set<std::string> allowed = all_result_file_names();
-    for (const std::string name : {"sweep.csv", "sweep.png", "sweep.gp"})
-      allowed.insert(name);
     std::vector<std::string> names;
     for (unsigned int i = 0; i < sweep.values.size(); ++i)
-      {
-        names.push_back(directory_name(i, sweep.values[i]));
-        allowed.insert(names.back());
-      }
-    std::error_code error;
-    if (fs::is_regular_file(study + "/sweep.csv", error))
-      for (const auto &entry : fs::directory_iterator(study, error))
-        {
-          const std::string name = entry.path().filename().string();
-          if (entry.is_directory() && name.size() > 3
-              && std::isdigit(static_cast<unsigned char>(name[0]))
-              && name.find('_') != std::string::npos)
-            allowed.insert(name);
-        }
-    ResultDirectory directory(study, allowed);
+      names.push_back(sweep.directory_name(i));
+    const std::set<std::string> allowed = sweep.study_entries(study);
+    ResultDirectory             directory(study, allowed);
 
     std::vector<BatchCase> cases(sweep.values.size());
     for (unsigned int i = 0; i < sweep.values.size(); ++i)
@@ -338,14 +380,7 @@ namespace coaxfit
     const std::string  x    = sweep.numeric() ? "1" : "0";
     const std::string  tics = sweep.numeric() ? "" : ":xtic(1)";
     std::ostringstream gp;
-    gp << "# coaxfit: gnuplot script of the sweep's plot; run it here with "
-          "'gnuplot sweep.gp'\n"
-       << "set terminal pngcairo size 960,900 font ',11'\n"
-       << "set output 'sweep.png'\n"
-       << "set datafile separator ','\n"
-       << "set datafile missing ''\n"
-       << "set key top left\nset grid\n"
-       << "set xlabel '" << sweep.entry << "' noenhanced\n"
+    gp << "set key top left\n"
        << "set multiplot layout 2,1\n"
        << "set ylabel 'contact pressure (MPa)'\n"
        << "plot 'sweep.csv' skip 1 using " << x << ":7" << tics
@@ -360,17 +395,9 @@ namespace coaxfit
        << "     '' skip 1 using " << x << ":10" << tics
        << " with linespoints pt 4 dt 2 title 'DIN 7190'\n"
        << "unset multiplot\n";
-    std::ofstream script = open_result_file(directory + "/sweep.gp");
-    script << gp.str();
-    close_result_file(script, directory + "/sweep.gp");
-    const std::string problem = run_gnuplot(directory, "sweep.gp");
-    if (!problem.empty())
-      {
-        std::remove((directory + "/sweep.png").c_str());
-        return "sweep.png skipped: " + problem;
-      }
-    check_complete_png(directory + "/sweep.png");
-    return "sweep.png: pressures and torque capacity against " + sweep.entry
-           + " (sweep.gp redraws it)";
+    return sweep.draw(directory,
+                      "960,900",
+                      gp.str(),
+                      "pressures and torque capacity");
   }
 } // namespace coaxfit

@@ -22,6 +22,7 @@
 #include <iomanip>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -50,12 +51,16 @@ namespace coaxfit
     std::string
     joining_text(const JointFigures &f)
     {
-      const std::size_t dash  = f.name.find('-');
-      const std::string inner = f.name.substr(0, dash),
-                        outer = f.name.substr(dash + 1);
+      // The parts as they are when the joint is made (Assembly/Order).
+      const std::string inner = part_text(f.press_inner_part),
+                        outer = part_text(f.press_outer_part);
       std::ostringstream s;
       s << std::setprecision(6) << "joining (U_max " << f.joining_interference
-        << " mm + clearance " << f.joining_clearance << " mm, DIN 7190): ";
+        << " mm";
+      if (f.joining_growth != 0.)
+        s << (f.joining_growth > 0. ? " + " : " - ")
+          << std::abs(f.joining_growth) << " mm from the parts joined before";
+      s << " + clearance " << f.joining_clearance << " mm, DIN 7190): ";
       if (!std::isnan(f.heat_outer_to))
         s << "heat " << outer << " to " << celsius(f.heat_outer_to)
           << (f.heat_above_limit ? " (above its temperature limit)" : "");
@@ -407,8 +412,10 @@ namespace coaxfit
                                * (parameters.fits[j].largest_interference
                                   - parameters.fits[j].smoothing_loss);
       }
+    // Unilateral whatever Contact/Unilateral says: parts being pressed
+    // together cannot bond.
     unsigned int set_steps = 0;
-    return solve_stack_contact(C, joints, parameters.unilateral, set_steps);
+    return solve_stack_contact(C, joints, true, set_steps);
   }
 
 
@@ -443,7 +450,31 @@ namespace coaxfit
                                * area;
     f.press_in_force_estimate
       = f.press_in_friction_coefficient
-        * plane_stress(first, last, false).pressure(in_part) * area;
+        * plane_stress(first, last, false, true).pressure(in_part) * area;
+
+    // What the parts add to the joint's largest interference before it is
+    // made: the inner part's outside grown, the outer part's bore closed
+    // by the joints already made (u = C F on their points).
+    const unsigned int n = joint.n_points();
+    Vector<double>     change(n);
+    if (k > first)
+      {
+        const StackState   inner = part_assembly(first, k, true);
+        const unsigned int n_in  = stack_joints[k - 1].n_points();
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n_in; ++j)
+            change[i]
+              += compliance(k)(n_in + i, j) * inner.force[k - 1 - first][j];
+      }
+    if (last > k + 1)
+      {
+        const StackState   outer = part_assembly(k + 1, last, true);
+        const unsigned int n_out = stack_joints[k + 1].n_points();
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n_out; ++j)
+            change[i] -= compliance(k + 1)(i, n + j) * outer.force[0][j];
+      }
+    f.joining_growth = 2. * *std::max_element(change.begin(), change.end());
   }
 
 
@@ -694,8 +725,10 @@ namespace coaxfit
       for (unsigned int i = 0; i < joints[k].n_points(); ++i)
         joints[k].load_shift[i]
           += (omega_squared - omega_squared_operation) * rotation_shift[k][i];
+    // Unilateral whatever Contact/Unilateral says: parts being pressed
+    // together cannot bond.
     unsigned int set_steps = 0;
-    return solve_stack_contact(C, joints, parameters.unilateral, set_steps);
+    return solve_stack_contact(C, joints, true, set_steps);
   }
 
 
@@ -773,7 +806,8 @@ namespace coaxfit
     f.joining_interference = parameters.fits[k].largest_interference;
     f.joining_clearance
       = joining_clearance_entry(parameters.operation.joining_clearance_text, D);
-    const double U = std::max(f.joining_interference, -f.joining_clearance);
+    const double U       = std::max(f.joining_interference + f.joining_growth,
+                              -f.joining_clearance);
     const double unknown = std::numeric_limits<double>::quiet_NaN();
     f.heat_outer_to
       = outer.thermal_expansion > 0. ? joining_temperature(
@@ -798,7 +832,8 @@ namespace coaxfit
   CompoundCylinders
   StackFit::plane_stress(const unsigned int first,
                          const unsigned int last,
-                         const bool         loaded) const
+                         const bool         loaded,
+                         const bool         unilateral) const
   {
     const bool                           with_loads = loaded && has_loads();
     const StackOperation                &o          = parameters.operation;
@@ -835,7 +870,7 @@ namespace coaxfit
                              with_loads && last + 1 == bodies.size() ?
                                o.outer_pressure :
                                0.,
-                             parameters.unilateral);
+                             parameters.unilateral || unilateral);
   }
 
 
@@ -865,8 +900,8 @@ namespace coaxfit
                          / (joint.weights.mean_value() * joint.weights.size());
         f.lame_p       = lame.pressure(k);
         f.lame_alone_p = plane_stress(k, k + 1).pressure(0);
-        joining(k, f);
         pressing(k, f);
+        joining(k, f);
         joints_out.push_back(f);
       }
     loosening_speeds();
@@ -916,14 +951,15 @@ namespace coaxfit
 
 
   int
-  StackFit::run(std::ostream &out, const bool progress)
+  StackFit::run(std::ostream &out, const bool progress, const std::string &into)
   {
     const auto start = std::chrono::steady_clock::now();
     out << "coaxfit: " << parameters.case_name << ", "
         << parameters.bodies.size() << " bodies (";
     for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
       out << (b > 0 ? ", " : "") << parameters.bodies[b];
-    out << "), " << parameters.n_joints() << " joints\n";
+    out << "), " << parameters.n_joints()
+        << (parameters.n_joints() == 1 ? " joint\n" : " joints\n");
     // The directory is checked before any work.
     std::set<std::string> files = {"summary.json",
                                    "parameters.prm",
@@ -945,7 +981,10 @@ namespace coaxfit
     for (const std::string &name : all_result_file_names())
       files.insert(name);
     check_stack_memory(parameters);
-    ResultDirectory directory(parameters.output_directory(), files);
+    // Its own directory, staged; or the existing one of a study.
+    std::optional<ResultDirectory> directory;
+    if (into.empty())
+      directory.emplace(parameters.output_directory(), files);
 
     setup_system();
     unsigned int n_dofs = 0;
@@ -1135,12 +1174,16 @@ namespace coaxfit
       out << "  caution: " << caution << '\n';
     out << "  " << verdict.line() << '\n';
 
-    timing["total"]              = seconds_since(start);
-    const std::string plots_note = output_results(directory.staging_path());
+    timing["total"] = seconds_since(start);
+    const std::string plots_note
+      = output_results(directory ? directory->staging_path() : into);
     if (plots_note.rfind("plots skipped", 0) == 0)
       out << "  " << plots_note << '\n';
-    directory.commit(out);
-    out << "  results in " << parameters.output_directory() << '\n';
+    if (directory)
+      {
+        directory->commit(out);
+        out << "  results in " << parameters.output_directory() << '\n';
+      }
     if (parameters.print_timing)
       out << "  wall time " << std::setprecision(3) << seconds_since(start)
           << " s\n";

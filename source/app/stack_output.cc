@@ -61,6 +61,7 @@ namespace coaxfit
                                        {"mean", number_or_null(f.alone_p_mean)}}},
                                      {"staggered_steps", f.alone_steps}};
       j["joining"] = {{"interference_max", f.joining_interference},
+                      {"interference_from_parts", f.joining_growth},
                       {"clearance", f.joining_clearance},
                       {"heat_outer_to", number_or_null(f.heat_outer_to)},
                       {"heat_above_limit", f.heat_above_limit},
@@ -274,8 +275,13 @@ namespace coaxfit
             joints_json.back()["assembly"] = assembly;
           }
       }
-    j["joints"]      = joints_json;
-    Json bodies_json = Json::array();
+    j["joints"] = joints_json;
+    // Assembly/Order: the joints in the order they are made.
+    Json order = Json::array();
+    for (const unsigned int k : parameters.joining_order)
+      order.push_back(parameters.joint_name(k));
+    j["joining_order"] = order;
+    Json bodies_json   = Json::array();
     for (const BodyFigures &f : bodies_out)
       {
         Json b = {{"name", f.name},

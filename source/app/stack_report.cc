@@ -53,8 +53,9 @@ namespace coaxfit
     const std::string      name = directory + "/report.md";
     std::ofstream          md   = open_result_file(name);
     md << "# coaxfit: " << p.case_name << "\n\nAn assembly of "
-       << p.bodies.size() << " coaxial bodies, inside out, and its "
-       << p.n_joints() << " joints, all solved at once.\n\n";
+       << p.bodies.size() << " coaxial bodies (listed inside out) and its "
+       << p.n_joints() << (p.n_joints() == 1 ? " joint" : " joints")
+       << ", all solved at once.\n\n";
     if (verdict.ok())
       md << "Verdict: OK\n\n";
     else
@@ -192,11 +193,17 @@ namespace coaxfit
           "its bodies expand alike); from the assembly temperature "
        << design_figure(p.operation.assembly_temperature)
        << " C. Cooling below -196 C (liquid nitrogen) is not reachable.\n\n"
-          "| joint | U_max mm | clearance mm | heat the outer body to C | "
-          "or cool the inner body to C |\n|---|---|---|---|---|\n";
+          "The parts joined before add to the interference: the inner "
+          "part's outside has grown and the outer part's bore has closed "
+          "under the joints made before (largest over the joint, at the "
+          "largest interferences).\n\n"
+          "| joint | U_max mm | from the parts mm | clearance mm | heat the "
+          "outer part to C | or cool the inner part to C |\n"
+          "|---|---|---|---|---|---|\n";
     for (const JointFigures &f : joints_out)
       md << "| " << f.name << " | " << design_figure(f.joining_interference)
-         << " | " << design_figure(f.joining_clearance) << " | "
+         << " | " << design_figure(f.joining_growth) << " | "
+         << design_figure(f.joining_clearance) << " | "
          << (std::isnan(f.heat_outer_to) ?
                std::string("no thermal expansion") :
                design_figure(f.heat_outer_to)
@@ -278,8 +285,12 @@ namespace coaxfit
     else
       md << "the staggered Dirichlet-Neumann process over all joints ("
          << (p.ordering == StackOrdering::jacobi ? "Jacobi" : "Gauss-Seidel")
-         << "), converged in " << steps << " steps (" << body_solves
-         << " body solves) to " << p.tolerance << ".\n";
+         << "), "
+         << (converged ? "converged in " :
+                         "NOT converged in (Coupling/Max "
+                         "steps) ")
+         << steps << " steps (" << body_solves << " body solves), tolerance "
+         << p.tolerance << ".\n";
     // The files as written (without VTU files, plots or the convergence
     // plot of a monolithic run, the list is shorter).
     std::set<std::string> files = {"report.md"};

@@ -171,13 +171,14 @@ namespace coaxfit
     const fs::file_status status = fs::status(target, error);
     if (status.type() == fs::file_type::directory)
       {
-        // Subdirectories (the cases of Fit/Case = all) are replaced too:
-        // everything in them must be coaxfit's as well.
+        // Subdirectories (the cases of Fit/Case = all, the values of a
+        // study) are replaced too: everything in them must be coaxfit's as
+        // well (a stack's files in a study's value directories).
         for (auto entry = fs::recursive_directory_iterator(target, error);
              entry != fs::recursive_directory_iterator();
              entry.increment(error))
           if ((result_files.count(entry->path().filename().string()) == 0
-               && !(entry.depth() == 0 && entry->is_regular_file()
+               && !(entry.depth() <= 1 && entry->is_regular_file()
                     && assembly_result_file(entry->path().filename().string())))
               || (entry->is_directory() && entry.depth() > 0))
             refuse(target_name,

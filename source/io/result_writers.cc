@@ -11,6 +11,23 @@
 
 namespace coaxfit
 {
+  std::string
+  csv_field(const std::string &text)
+  {
+    if (text.find_first_of(",\"\n") == std::string::npos)
+      return text;
+    std::string quoted = "\"";
+    for (const char ch : text)
+      {
+        if (ch == '"')
+          quoted += '"';
+        quoted += (ch == '\n' ? ' ' : ch);
+      }
+    return quoted + '"';
+  }
+
+
+
   std::ofstream
   open_result_file(const std::string &filename)
   {

@@ -52,6 +52,31 @@ namespace coaxfit
 
 
 
+  bool
+  declares_entry(ParameterHandler &prm, const std::string &path)
+  {
+    const std::vector<std::string> parts = split_path(path);
+    if (parts.size() < 2)
+      return false;
+    try
+      {
+        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+          prm.enter_subsection(parts[i]);
+        prm.set(parts.back(), "");
+        return true;
+      }
+    catch (const ParameterHandler::ExcEntryUndeclared &)
+      {
+        return false;
+      }
+    catch (const std::exception &)
+      {
+        return true;
+      }
+  }
+
+
+
   std::vector<std::string>
   split_path(const std::string &path)
   {

@@ -1391,25 +1391,7 @@ namespace coaxfit
   {
     ParameterHandler prm;
     Parameters().declare_parameters(prm);
-    const std::vector<std::string> parts = split_path(path);
-    if (parts.size() < 2)
-      return false;
-    try
-      {
-        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-          prm.enter_subsection(parts[i]);
-        // An empty value: refused by the entry's pattern if it exists.
-        prm.set(parts.back(), "");
-        return true;
-      }
-    catch (const ParameterHandler::ExcEntryUndeclared &)
-      {
-        return false;
-      }
-    catch (const std::exception &)
-      {
-        return true;
-      }
+    return declares_entry(prm, path);
   }
 
 

@@ -213,51 +213,78 @@ namespace coaxfit
 
     /**
      * The joints of @p p in the order they are made, from Assembly/Order:
-     * `inside out`, `outside in`, or every joint named once.
+     * `inside out`, `outside in` (runs of white space count as one), or
+     * every joint named once. @p normal receives the order as the results
+     * name it: the keyword, or the joints separated by `, `.
      */
     std::vector<unsigned int>
-    joining_order(const StackParameters &p)
+    joining_order(const StackParameters &p, std::string &normal)
     {
       const unsigned int        n = p.n_joints();
       std::vector<unsigned int> order;
-      const std::string         text = trim(p.order_text);
+      std::string               text;
+      for (const char c : trim(p.order_text))
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          text += c;
+        else if (!text.empty() && text.back() != ' ')
+          text += ' ';
       if (text == "inside out" || text == "outside in")
         {
           for (unsigned int k = 0; k < n; ++k)
             order.push_back(text == "inside out" ? k : n - 1 - k);
+          normal = text;
           return order;
         }
       std::string joints;
       for (unsigned int k = 0; k < n; ++k)
         joints += (k > 0 ? ", " : "") + p.joint_name(k);
-      const std::string  entry = "parameter Assembly/Order = '" + text + "'";
+      const std::string entry = "parameter Assembly/Order = '" + text + "'";
+      const std::string allowed
+        = " (allowed: inside out, outside in, or each of the joints " + joints
+          + " once, in the order they are made, separated by commas)";
+      if (text.empty() || text.back() == ',')
+        throw InputError(entry + ": an empty item" + allowed);
       std::istringstream in(text);
       std::string        name;
       while (std::getline(in, name, ','))
         {
-          name               = trim(name);
+          name = trim(name);
+          if (name.empty())
+            throw InputError(entry + ": an empty item" + allowed);
           unsigned int known = n;
           for (unsigned int k = 0; k < n; ++k)
             if (p.joint_name(k) == name)
               known = k;
           if (known == n)
             throw InputError(entry + ": '" + name
-                             + "' is not a joint of Assembly/Bodies (allowed: "
-                               "inside out, outside in, or each of the joints "
-                             + joints + " once, in the order they are made)");
+                             + "' is not a joint of Assembly/Bodies" + allowed);
           if (std::find(order.begin(), order.end(), known) != order.end())
-            throw InputError(entry + " names the joint " + name
-                             + " twice (each of " + joints + " once)");
+            throw InputError(entry + " names the joint " + name + " twice"
+                             + allowed);
           order.push_back(known);
         }
       for (unsigned int k = 0; k < n; ++k)
         if (std::find(order.begin(), order.end(), k) == order.end())
           throw InputError(entry + " does not name the joint " + p.joint_name(k)
-                           + " (each of " + joints
-                           + " once, in the order they are made)");
+                           + allowed);
+      normal.clear();
+      for (const unsigned int k : order)
+        normal += (normal.empty() ? "" : ", ") + p.joint_name(k);
       return order;
     }
   } // namespace
+
+
+
+  bool
+  StackParameters::declares(const std::string &path) const
+  {
+    // The entries of a copy (add_parameter binds them to its members).
+    StackParameters  copy = *this;
+    ParameterHandler prm;
+    copy.declare_parameters(prm);
+    return declares_entry(prm, path);
+  }
 
 
 
@@ -797,6 +824,25 @@ namespace coaxfit
                        + " bore pressure = " + number(operation.bore_pressure)
                        + ": the body " + bodies[0] + " is solid (Geometry/"
                        + bodies[0] + "/Inner diameter = 0); allowed is 0");
+    // Fit/Case chooses among an ISO fit's interferences.
+    bool iso = false;
+    for (const JointFit &fit : fits)
+      iso = iso || !fit.iso_fit.empty();
+    if (fit_case != "mean" && !iso)
+      throw InputError("parameter Fit/Case = " + fit_case
+                       + ": no joint has an ISO fit, whose smallest or "
+                         "largest interference it would choose (a "
+                         "Diametral interference is used as given); allowed "
+                         "is mean, or an ISO fit");
+    for (unsigned int k = 0; k < n_joints(); ++k)
+      {
+        const double mu = joint_entries[k].press_in_friction_coefficient;
+        if (mu > 0. && mu < 1e-6)
+          throw InputError("parameter Fit/" + joint_name(k)
+                           + "/Press-in friction coefficient = " + number(mu)
+                           + ": allowed is 0 (Fit's value) or 1e-6 <= nu_e "
+                             "<= 1");
+      }
     if (required_torque > 0.)
       for (unsigned int k = 0; k < n_joints(); ++k)
         if (fits[k].friction_coefficient == 0.)
@@ -921,20 +967,51 @@ namespace coaxfit
 
 
 
+  namespace
+  {
+    /**
+     * A stack of the bodies of @p filename (the first pass), its lists
+     * sized for the second.
+     */
+    StackParameters
+    sized_stack(
+      const std::string                                      &filename,
+      const std::vector<std::pair<std::string, std::string>> &overrides)
+    {
+      check_parameter_file(filename);
+      StackParameters p;
+      p.bodies = assembly_bodies(filename, overrides);
+      if (p.bodies.empty())
+        throw InputError("parameter file '" + filename
+                         + "' gives no Assembly/Bodies");
+      p.rings.resize(p.bodies.size());
+      p.materials.resize(p.bodies.size());
+      p.joint_entries.resize(p.n_joints());
+      return p;
+    }
+  } // namespace
+
+
+
+  void
+  print_stack_parameters(std::ostream &out, const std::string &filename)
+  {
+    StackParameters  p = sized_stack(filename, {});
+    ParameterHandler prm;
+    p.declare_parameters(prm);
+    out << "# coaxfit: the parameters of a stack of the bodies of '" << filename
+        << "' with their defaults and documentation\n";
+    prm.print_parameters(out, ParameterHandler::Text);
+  }
+
+
+
   StackParameters
   read_stack_parameters(
     const std::string                                      &filename,
     const std::vector<std::pair<std::string, std::string>> &overrides)
   {
-    check_parameter_file(filename);
-    StackParameters p;
-    p.bodies = assembly_bodies(filename, overrides);
-    if (p.bodies.empty())
-      throw InputError("parameter file '" + filename
-                       + "' gives no Assembly/Bodies");
-    p.rings.resize(p.bodies.size());
-    p.materials.resize(p.bodies.size());
-    p.joint_entries.resize(p.n_joints());
+    StackParameters p = sized_stack(filename, overrides);
 
     ParameterHandler prm;
     p.declare_parameters(prm);
@@ -1105,7 +1182,9 @@ namespace coaxfit
     for (const std::string &text : p.operation.temperature_text)
       p.operation.temperature.push_back(
         temperature_entry(text, p.operation.assembly_temperature));
-    p.joining_order = joining_order(p);
+    std::string order;
+    p.joining_order = joining_order(p, order);
+    p.order_text    = order;
     p.validate();
 
     // The written parameters must repeat the run: the values a material

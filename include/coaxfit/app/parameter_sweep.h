@@ -2,6 +2,7 @@
 #define coaxfit_parameter_sweep_h
 
 #include <iosfwd>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,30 @@ namespace coaxfit
     static SweepSpec
     parse(const std::string &argument);
 
+    /**
+     * The subdirectory of value @p index in a study: `NN_value`, the value
+     * in letters, digits and . + - = only.
+     */
+    std::string
+    directory_name(unsigned int index) const;
+    /**
+     * What the study directory @p study may hold: a run's files, the
+     * table and plot, the value subdirectories of this study and of an
+     * earlier one (recognized by its sweep.csv).
+     */
+    std::set<std::string>
+    study_entries(const std::string &study) const;
+    /**
+     * Write sweep.gp (the terminal of @p size, sweep.csv as data, this
+     * entry on the x axis, then @p plots) into @p directory and draw
+     * sweep.png with it; what was drawn (@p what against the entry) or
+     * why it was skipped.
+     */
+    std::string
+    draw(const std::string &directory,
+         const std::string &size,
+         const std::string &plots,
+         const std::string &what) const;
     /** Whether every value is a number (the plot's axis is then a scale). */
     bool
     numeric() const;

@@ -56,9 +56,15 @@ namespace coaxfit
      */
     /** @{ */
     double joining_interference = 0.; ///< mm, the largest U
-    double joining_clearance    = 0.; ///< mm
-    double heat_outer_to        = 0.; ///< C; NaN: no thermal expansion known
-    double cool_inner_to = 0.; ///< C; NaN: no expansion coefficient known
+    /**
+     * mm, what the parts joined before add to it (diametral, the largest
+     * over the points): the inner part's outside grown, the outer part's
+     * bore closed (Assembly/Order).
+     */
+    double joining_growth    = 0.;
+    double joining_clearance = 0.; ///< mm
+    double heat_outer_to     = 0.; ///< C; NaN: no thermal expansion known
+    double cool_inner_to     = 0.; ///< C; NaN: no expansion coefficient known
     /** The inner body's heating coefficient was used (no Cooling expansion). */
     bool cooling_from_heating = false;
     /** The outer body's temperature would exceed its temperature limit. */
@@ -177,11 +183,13 @@ namespace coaxfit
 
     /**
      * The whole run for the command line: set up, solve, print the joint
-     * table to @p out, write the results atomically. Returns the exit
-     * code (0, or 2 if the process did not converge).
+     * table to @p out, write the results atomically (or, with @p into,
+     * into that existing directory: a case of a study staged as a whole).
+     * Returns the exit code (0, or 2 if the process did not converge; a
+     * diverged process writes nothing).
      */
     int
-    run(std::ostream &out, bool progress);
+    run(std::ostream &out, bool progress, const std::string &into = "");
 
     const std::vector<JointFigures> &
     joint_figures() const
@@ -328,14 +336,16 @@ namespace coaxfit
     /**
      * The plane-stress compound cylinders of bodies @p first to @p last
      * with their loads of operation (if the stack has them and
-     * @p loaded): the
+     * @p loaded), its joints unilateral if Contact/Unilateral or
+     * @p unilateral says so: the
      * interferences less the free rings' growth apart, the pressures on
      * the free surfaces of the whole stack.
      */
     CompoundCylinders
     plane_stress(unsigned int first,
                  unsigned int last,
-                 bool         loaded = true) const;
+                 bool         loaded     = true,
+                 bool         unilateral = false) const;
 
     /**
      * The contact of all joints at the speed whose omega^2 is
@@ -372,7 +382,8 @@ namespace coaxfit
     /**
      * The contact of the part-assembly of bodies @p first to @p last at
      * the assembly temperature (the others removed, the same meshes),
-     * monolithically on the bodies' compliances on its joints' points;
+     * monolithically on the bodies' compliances on its joints' points,
+     * unilateral (parts being pressed together cannot bond);
      * its joints at their largest interferences if @p largest, else at
      * those in use.
      */

@@ -257,6 +257,13 @@ namespace coaxfit
                       const std::vector<std::string> &body_keys);
 
   /**
+   * @p text as one CSV field: quoted (its quotes doubled, line breaks as
+   * spaces) if it holds a comma, quote or line break.
+   */
+  std::string
+  csv_field(const std::string &text);
+
+  /**
    * Open @p filename for writing with 15 significant digits; throws if it
    * cannot be opened.
    */

@@ -30,6 +30,14 @@ namespace coaxfit
   std::string
   entry_list(const std::set<std::string> &entries);
 
+  /**
+   * Whether `Section/Name` @p path is declared in @p prm (whose value it
+   * does not change: an empty value is tried, and refused by the pattern
+   * of an entry that exists).
+   */
+  bool
+  declares_entry(ParameterHandler &prm, const std::string &path);
+
   /** Split `A/B/Name` into its parts. */
   std::vector<std::string>
   split_path(const std::string &path);

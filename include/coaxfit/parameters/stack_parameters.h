@@ -5,6 +5,7 @@
 
 #include <coaxfit/parameters/parameters.h>
 
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -219,6 +220,12 @@ namespace coaxfit
      */
     std::pair<unsigned int, unsigned int>
     joined_parts(unsigned int k) const;
+    /**
+     * Whether `Section/Name` @p path is an entry of a stack of these
+     * bodies (what --sweep may vary).
+     */
+    bool
+    declares(const std::string &path) const;
     /** Declare every entry for the bodies in @p bodies (sized first). */
     void
     declare_parameters(ParameterHandler &prm);
@@ -257,6 +264,13 @@ namespace coaxfit
   assembly_bodies(
     const std::string                                      &filename,
     const std::vector<std::pair<std::string, std::string>> &overrides);
+
+  /**
+   * Print every entry of a stack of the bodies of @p filename
+   * (Assembly/Bodies) with its default, pattern and documentation.
+   */
+  void
+  print_stack_parameters(std::ostream &out, const std::string &filename);
 
   /** The second pass: every entry of the stack of @p filename. */
   StackParameters

@@ -1,0 +1,245 @@
+#include <coaxfit/app/stack_fit.h>
+#include <coaxfit/app/stack_sweep.h>
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/io/result_directory.h>
+#include <coaxfit/io/result_writers.h>
+#include <coaxfit/parameters/stack_parameters.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace fs = std::filesystem;
+
+
+
+  StackSweep::StackSweep(
+    const std::string                                      &filename,
+    const std::vector<std::pair<std::string, std::string>> &overrides,
+    const SweepSpec                                        &sweep,
+    const bool                                              verbose,
+    std::ostream                                           &out)
+    : filename(filename)
+    , overrides(overrides)
+    , sweep(sweep)
+    , verbose(verbose)
+    , out(out)
+  {}
+
+
+
+  std::vector<std::string>
+  StackSweep::columns(const std::vector<std::string> &bodies) const
+  {
+    std::vector<std::string> names;
+    for (unsigned int k = 0; k + 1 < bodies.size(); ++k)
+      for (const std::string field : {"_pressure_mid_plane_MPa",
+                                      "_pressure_mean_MPa",
+                                      "_closed",
+                                      "_safety_slip",
+                                      "_press_in_force_N"})
+        names.push_back(bodies[k] + "-" + bodies[k + 1] + field);
+    for (const std::string &b : bodies)
+      for (const std::string field :
+           {"_von_mises_mid_plane_MPa", "_safety_yield"})
+        names.push_back(b + field);
+    return names;
+  }
+
+
+
+  int
+  StackSweep::run()
+  {
+    if (sweep.entry == "Assembly/Bodies")
+      throw InputError("--sweep Assembly/Bodies: the bodies of a stack "
+                       "cannot be swept (every value must have the same "
+                       "joints); give each stack its own parameter file");
+    if (sweep.entry == "Output/Directory")
+      throw InputError("--sweep: Output/Directory cannot be swept (each "
+                       "value has its subdirectory of the study)");
+    // The file must be a stack (else every value fails alike): read with
+    // its own entries, or with the first value if that is what it lacks.
+    StackParameters base;
+    try
+      {
+        base = read_stack_parameters(filename, overrides);
+      }
+    catch (const InputError &)
+      {
+        auto with = overrides;
+        with.emplace_back(sweep.entry, sweep.values.front());
+        base = read_stack_parameters(filename, with);
+      }
+    if (!base.declares(sweep.entry))
+      throw InputError(
+        "--sweep " + sweep.entry
+        + ": no such parameter of this stack (coaxfit "
+          "--print-parameters FILE.prm lists them as Section/Name; a "
+          "stack's entries name its bodies and joints)");
+
+    const std::string study
+      = normalized_directory(base.output_directory()) + "_sweep";
+    ResultDirectory                directory(study, sweep.study_entries(study));
+    const std::vector<std::string> names = columns(base.bodies);
+    std::vector<Row>               rows(sweep.values.size());
+    for (unsigned int i = 0; i < sweep.values.size(); ++i)
+      {
+        Row              &row  = rows[i];
+        const std::string name = sweep.directory_name(i);
+        auto              with = overrides;
+        with.emplace_back(sweep.entry, sweep.values[i]);
+        // parameters.prm of the case names where it ends up.
+        with.emplace_back("Output/Directory", study + "/" + name);
+        std::ostringstream log;
+        try
+          {
+            StackParameters p      = read_stack_parameters(filename, with);
+            p.case_name            = base.case_name + "_" + name;
+            const std::string into = directory.staging_path() + "/" + name;
+            fs::create_directory(into);
+            StackFit fit(p);
+            row.exit_code = fit.run(verbose ? out : log, verbose, into);
+            // A diverged process wrote nothing.
+            row.written = fs::exists(into + "/summary.json");
+            if (!row.written)
+              {
+                fs::remove_all(into);
+                row.error = "diverged: nothing written";
+                continue;
+              }
+            row.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
+            row.values.push_back(fit.n_steps());
+            for (const JointFigures &f : fit.joint_figures())
+              for (const double v :
+                   {f.p_mid,
+                    f.p_mean,
+                    f.closed ? 1. : 0.,
+                    f.slip_safety > 0. ? f.slip_safety : std::nan(""),
+                    f.press_in_force})
+                row.values.push_back(v);
+            for (const BodyFigures &f : fit.body_figures())
+              for (const double v :
+                   {f.von_mises_mid_plane,
+                    f.yield_safety > 0. ? f.yield_safety : std::nan("")})
+                row.values.push_back(v);
+            if (row.exit_code == 2)
+              row.error = "not converged: written with converged false";
+          }
+        catch (const InputError &e)
+          {
+            // Said of the value as the user gave it.
+            std::string       message = e.what();
+            const std::string set     = "--set " + sweep.entry + "=";
+            if (message.compare(0, set.size(), set) == 0)
+              message = "--sweep value " + message.substr(set.size());
+            row.exit_code = 1;
+            row.error     = message;
+            fs::remove_all(directory.staging_path() + "/" + name);
+          }
+      }
+
+    bool any = false;
+    for (const Row &row : rows)
+      any = any || row.written;
+    // The table: each value, its exit code and figures.
+    std::ostringstream table;
+    table << "\ncoaxfit: sweep of " << sweep.entry << " over "
+          << sweep.values.size() << " values of " << filename << '\n'
+          << std::left << std::setw(16) << "  value" << std::right
+          << std::setw(6) << "exit" << std::setw(7) << "steps";
+    for (unsigned int k = 0; k < base.n_joints(); ++k)
+      table << std::setw(std::max<int>(16, base.joint_name(k).size() + 8))
+            << base.joint_name(k) + " p_mean";
+    table << "  verdict\n";
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      {
+        const Row &row = rows[i];
+        table << "  " << std::left << std::setw(14) << sweep.values[i]
+              << std::right << std::setw(6) << row.exit_code;
+        if (row.written)
+          {
+            table << std::setw(7) << row.values[0] << std::setprecision(6);
+            for (unsigned int k = 0; k < base.n_joints(); ++k)
+              table << std::setw(
+                std::max<int>(16, base.joint_name(k).size() + 8))
+                    << row.values[1 + 5 * k + 1];
+            table << "  " << row.verdict;
+          }
+        if (!row.error.empty())
+          table << "  " << row.error;
+        table << '\n';
+      }
+    out << table.str();
+    int code = 0;
+    for (const Row &row : rows)
+      code = std::max(code, row.exit_code == 2 ? 2 : row.exit_code);
+    if (!any)
+      {
+        out << "coaxfit: no value of the sweep gave a result; nothing "
+               "written, the earlier results in "
+            << study << " are untouched" << std::endl;
+        return std::max(1, code);
+      }
+
+    const std::string csv_name = directory.staging_path() + "/sweep.csv";
+    std::ofstream     csv      = open_result_file(csv_name);
+    csv << csv_field(sweep.entry) << ",exit_code,verdict,steps";
+    for (const std::string &n : names)
+      csv << ',' << n;
+    csv << ",error\n";
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      {
+        const Row &row = rows[i];
+        csv << csv_field(sweep.values[i]) << ',' << row.exit_code << ','
+            << row.verdict;
+        for (unsigned int c = 0; c < names.size() + 1; ++c)
+          {
+            csv << ',';
+            if (c < row.values.size() && std::isfinite(row.values[c]))
+              csv << row.values[c];
+          }
+        csv << ',' << csv_field(row.error) << '\n';
+      }
+    close_result_file(csv, csv_name);
+    const std::string plotted
+      = base.write_plots && sweep.numeric() ?
+          plot(directory.staging_path(), base.n_joints()) :
+          std::string("sweep.png not drawn (")
+            + (base.write_plots ? "values not numbers" :
+                                  "Output/Write plots = false")
+            + ")";
+    directory.commit(out);
+    out << "  " << plotted << "\n  results in " << study
+        << " (sweep.csv, one subdirectory per value)" << std::endl;
+    return code;
+  }
+
+
+
+  std::string
+  StackSweep::plot(const std::string &directory,
+                   const unsigned int n_joints) const
+  {
+    // Columns of sweep.csv: 1 value, 2 exit code, 3 verdict, 4 steps, then
+    // five per joint from 5 (p(0), p_mean, closed, slip safety, force).
+    std::ostringstream gp;
+    gp << "set key top left noenhanced autotitle columnheader\n"
+       << "set ylabel 'mean contact pressure (MPa)'\n"
+       << "plot ";
+    for (unsigned int k = 0; k < n_joints; ++k)
+      gp << (k > 0 ? ", \\\n     " : "") << "'sweep.csv' using 1:" << 6 + 5 * k
+         << " with linespoints pt 7";
+    gp << '\n';
+    return sweep.draw(directory,
+                      "960,600",
+                      gp.str(),
+                      "each joint's mean pressure");
+  }
+} // namespace coaxfit

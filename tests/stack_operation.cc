@@ -312,13 +312,24 @@ main()
     // core's (Assembly/Order inside out): the sleeve's outside has grown
     // by 2 u_r(45) of the core and sleeve alone (the closed form, at
     // assembly), which adds to U; the hub heated by (U + growth + 0.001 D)
-    // / (alpha_hub D), the core and sleeve cooled by the same over
-    // alpha_sleeve (no cooling coefficient given).
-    const nlohmann::json j = read_summary("three_rings_hot")["joints"][1];
-    const coaxfit::CompoundCylinders core_and_sleeve(
-      {{20., 60., 210000., 0.3}, {60., 90., 110000., 0.34}}, {0.04}, 0., 0.);
-    const double growth  = 2. * core_and_sleeve.radial_displacement(1, 45.);
-    const double open_up = 0.06 + growth + 0.09;
+    // / (alpha_hub D). The core and sleeve are cooled as a whole (no
+    // cooling coefficient given: the heating ones): the sleeve's outside
+    // shrinks by alpha_sleeve dT 45 and by what the core's joint changes,
+    // its interference grown by 60 (alpha_sleeve - alpha_core) dT (the
+    // closed form again; linear while it stays closed).
+    const nlohmann::json j       = read_summary("three_rings_hot")["joints"][1];
+    const auto           outside = [](const double cooled) {
+      const coaxfit::CompoundCylinders core_and_sleeve(
+        {{20., 60., 210000., 0.3}, {60., 90., 110000., 0.34}},
+        {0.04 + 60. * (18e-6 - 11.5e-6) * cooled},
+        0.,
+        0.);
+      return core_and_sleeve.radial_displacement(1, 45.) - 18e-6 * cooled * 45.;
+    };
+    const double growth    = 2. * outside(0.);
+    const double open_up   = 0.06 + growth + 0.09;
+    const double shrink    = outside(0.) - outside(1.); // per kelvin
+    const double cooled_by = open_up / (2. * shrink);
     std::cout << "  Sleeve-Hub joining: the sleeve's outside grown by "
               << std::setprecision(6) << growth << " mm exact: "
               << agreement(j["joining"]["interference_from_parts"],
@@ -328,10 +339,9 @@ main()
               << agreement(j["joining"]["heat_outer_to"],
                            20. + open_up / (23e-6 * 90.),
                            1e-6)
-              << ", or cool the core and sleeve to "
-              << agreement(j["joining"]["cool_inner_to"],
-                           20. - open_up / (18e-6 * 90.),
-                           1e-6)
+              << ", or cool the core and sleeve by " << cooled_by
+              << " K (alone " << open_up / (18e-6 * 90.) << " K) to "
+              << agreement(j["joining"]["cool_inner_to"], 20. - cooled_by, 1e-6)
               << '\n';
   }
   const std::vector<Ring> five

@@ -329,6 +329,45 @@ main()
       }
   }
 
+  // Joining a part of two bodies that expand differently: the shaft into
+  // the sleeve and the hub (outside in), the sleeve of bronze (18e-6/K)
+  // and the hub of aluminium (23e-6/K) heated as a whole. The sleeve's
+  // bore grows by 18e-6 dT 30 and by what its joint with the hub loses
+  // (the interference less 90 (23e-6 - 18e-6) dT; the closed form, linear
+  // while it stays closed); the steel shaft alone is cooled by DIN 7190's
+  // formula.
+  {
+    std::filesystem::remove_all("heated_part");
+    const RunResult r = run_coaxfit(
+      "heated_part",
+      quiet
+        + "--set 'Material/Shaft/Thermal expansion=11.5e-6' "
+          "--set 'Material/Sleeve/Thermal expansion=18e-6' "
+          "--set 'Material/Hub/Thermal expansion=23e-6' outside_in.prm");
+    const nlohmann::json j    = read_summary("heated_part")["joints"][0];
+    const auto           bore = [&](const double heated) {
+      return part(three, {0.04, 0.06 - 90. * (23e-6 - 18e-6) * heated}, 1, 2)
+               .radial_displacement(0, 30.)
+             + 18e-6 * heated * 30.;
+    };
+    const double growth    = -2. * bore(0.);
+    const double need      = 0.04 + growth + 0.06;
+    const double heated_by = need / (2. * (bore(1.) - bore(0.)));
+    std::cout << "heated part (Sleeve + Hub, outside in): exit " << r.exit_code
+              << "; the bore closed by " << growth << " mm "
+              << agreement(j["joining"]["interference_from_parts"],
+                           growth,
+                           1e-5)
+              << "; heated by " << heated_by << " K (the sleeve alone "
+              << need / (18e-6 * 60.) << " K) "
+              << agreement(j["joining"]["heat_outer_to"], 20. + heated_by, 1e-5)
+              << "; the shaft cooled by DIN 7190's formula "
+              << agreement(j["joining"]["cool_inner_to"],
+                           20. - need / (11.5e-6 * 60.),
+                           1e-5)
+              << '\n';
+  }
+
   // Bilateral joints (Contact/Unilateral = false): a clearance pressed in
   // does not bond, its force is 0 and the next joint's is that of its
   // outer part alone.

@@ -66,7 +66,10 @@ namespace coaxfit
     const std::string list = argument.substr(eq + 1);
     spec.entry             = trimmed(argument.substr(0, eq));
     const auto colon       = list.find(':');
-    if (colon != std::string::npos && list.find(',') == std::string::npos)
+    // Values that contain commas (a list of joints) are separated by ';'.
+    const char separator = list.find(';') != std::string::npos ? ';' : ',';
+    if (colon != std::string::npos && list.find(',') == std::string::npos
+        && separator == ',')
       {
         const auto        second = list.find(':', colon + 1);
         const std::string n
@@ -96,9 +99,9 @@ namespace coaxfit
     else
       {
         std::istringstream s(list);
-        for (std::string value; std::getline(s, value, ',');)
+        for (std::string value; std::getline(s, value, separator);)
           spec.values.push_back(trimmed(value));
-        if (!list.empty() && list.back() == ',')
+        if (!list.empty() && list.back() == separator)
           spec.values.emplace_back();
         for (const std::string &value : spec.values)
           if (value.empty())
@@ -132,12 +135,9 @@ namespace coaxfit
   std::set<std::string>
   SweepSpec::study_entries(const std::string &study) const
   {
-    // A run's files (in the value subdirectories), the table and plot,
-    // and the value subdirectories of this study and of an earlier one
-    // (recognized by its sweep.csv).
-    std::set<std::string> allowed = all_result_file_names();
-    for (const std::string name : {"sweep.csv", "sweep.png", "sweep.gp"})
-      allowed.insert(name);
+    // The table and plot, and the value subdirectories of this study and
+    // of an earlier one (recognized by its sweep.csv).
+    std::set<std::string> allowed = {"sweep.csv", "sweep.png", "sweep.gp"};
     for (unsigned int i = 0; i < values.size(); ++i)
       allowed.insert(directory_name(i));
     std::error_code error;
@@ -267,8 +267,9 @@ namespace coaxfit
     std::vector<std::string> names;
     for (unsigned int i = 0; i < sweep.values.size(); ++i)
       names.push_back(sweep.directory_name(i));
-    const std::set<std::string> allowed = sweep.study_entries(study);
-    ResultDirectory             directory(study, allowed);
+    ResultDirectory directory(study,
+                              all_result_file_names(),
+                              sweep.study_entries(study));
 
     std::vector<BatchCase> cases(sweep.values.size());
     for (unsigned int i = 0; i < sweep.values.size(); ++i)

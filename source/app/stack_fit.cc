@@ -383,7 +383,9 @@ namespace coaxfit
   StackState
   StackFit::part_assembly(const unsigned int first,
                           const unsigned int last,
-                          const bool         largest) const
+                          const bool         largest,
+                          const double       heating,
+                          const bool         cooling) const
   {
     // Each body's compliance on the points of the joints inside the
     // part: the first body's bore and the last one's outside are free.
@@ -411,6 +413,16 @@ namespace coaxfit
           joint.interference = 0.5
                                * (parameters.fits[j].largest_interference
                                   - parameters.fits[j].smoothing_loss);
+        // Heated (cooled) as a whole by @p heating: the free bodies grow
+        // apart by (alpha_outer - alpha_inner) dT R.
+        if (heating != 0.)
+          {
+            const double R = parameters.joint_diameter(j) / 2.;
+            joint.load_shift.reinit(joint.n_points());
+            joint.load_shift
+              = (expansion(j + 1, cooling) - expansion(j, cooling)) * heating
+                * R;
+          }
       }
     // Unilateral whatever Contact/Unilateral says: parts being pressed
     // together cannot bond.
@@ -725,10 +737,8 @@ namespace coaxfit
       for (unsigned int i = 0; i < joints[k].n_points(); ++i)
         joints[k].load_shift[i]
           += (omega_squared - omega_squared_operation) * rotation_shift[k][i];
-    // Unilateral whatever Contact/Unilateral says: parts being pressed
-    // together cannot bond.
     unsigned int set_steps = 0;
-    return solve_stack_contact(C, joints, true, set_steps);
+    return solve_stack_contact(C, joints, parameters.unilateral, set_steps);
   }
 
 
@@ -798,10 +808,8 @@ namespace coaxfit
   void
   StackFit::joining(const unsigned int k, JointFigures &f) const
   {
-    const double    D     = parameters.joint_diameter(k);
-    const double    T     = parameters.operation.assembly_temperature;
-    const Material &inner = parameters.materials[k];
-    const Material &outer = parameters.materials[k + 1];
+    const double D = parameters.joint_diameter(k);
+    const double T = parameters.operation.assembly_temperature;
     // A clearance needs no more than the joining clearance.
     f.joining_interference = parameters.fits[k].largest_interference;
     f.joining_clearance
@@ -809,22 +817,114 @@ namespace coaxfit
     const double U       = std::max(f.joining_interference + f.joining_growth,
                               -f.joining_clearance);
     const double unknown = std::numeric_limits<double>::quiet_NaN();
+    // The parts as they are when the joint is made: heated or cooled as a
+    // whole, each with the coefficient that opens the joint per kelvin
+    // (DIN 7190's alpha of one body, or a part's, joints included).
+    const auto [first, last] = parameters.joined_parts(k);
+    const double opening     = U + f.joining_clearance;
+    const double heat_alpha  = part_expansion(k, k + 1, last, false, opening);
+    const double cool_alpha  = part_expansion(k, first, k, true, opening);
     f.heat_outer_to
-      = outer.thermal_expansion > 0. ? joining_temperature(
-          true, U, f.joining_clearance, D, outer.thermal_expansion, T) :
-                                       unknown;
-    f.heat_above_limit = outer.temperature_limit > 0.
-                         && f.heat_outer_to > outer.temperature_limit;
-    f.cooling_from_heating = !(inner.cooling_expansion > 0.);
-    f.cool_inner_to        = inner.joining_cooling_expansion() > 0. ?
-                               joining_temperature(false,
-                                            U,
-                                            f.joining_clearance,
-                                            D,
-                                            inner.joining_cooling_expansion(),
-                                            T) :
-                               unknown;
+      = heat_alpha > 0. ?
+          joining_temperature(true, U, f.joining_clearance, D, heat_alpha, T) :
+          unknown;
+    f.heat_above_limit = false;
+    for (unsigned int b = k + 1; b <= last; ++b)
+      f.heat_above_limit
+        = f.heat_above_limit
+          || (parameters.materials[b].temperature_limit > 0.
+              && f.heat_outer_to > parameters.materials[b].temperature_limit);
+    f.cooling_from_heating = false;
+    for (unsigned int b = first; b <= k; ++b)
+      f.cooling_from_heating
+        = f.cooling_from_heating
+          || !(parameters.materials[b].cooling_expansion > 0.);
+    f.cool_inner_to
+      = cool_alpha > 0. ?
+          joining_temperature(false, U, f.joining_clearance, D, cool_alpha, T) :
+          unknown;
     f.cool_reachable = !(f.cool_inner_to < OperationAnalysis::coldest_coolant);
+  }
+
+
+
+  double
+  StackFit::expansion(const unsigned int b, const bool cooling) const
+  {
+    const Material &m = parameters.materials[b];
+    return cooling ? m.joining_cooling_expansion() : m.thermal_expansion;
+  }
+
+
+
+  double
+  StackFit::part_expansion(const unsigned int k,
+                           const unsigned int first,
+                           const unsigned int last,
+                           const bool         cooling,
+                           const double       opening) const
+  {
+    const double unknown = std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int b = first; b <= last; ++b)
+      if (!(expansion(b, cooling) > 0.))
+        return unknown;
+    // The surface at joint k: the outer part's bore or the inner part's
+    // outside, of the joint's own body.
+    const bool         bore = first == k + 1;
+    const unsigned int b    = bore ? first : last;
+    if (first == last || !(opening > 0.))
+      return expansion(b, cooling);
+
+    // The surface's displacement under the forces of the part's joint
+    // next to it (u = C F on its points).
+    const double       R       = parameters.joint_diameter(k) / 2.;
+    const unsigned int n       = stack_joints[k].n_points();
+    const auto         surface = [&](const StackState &state) {
+      Vector<double> u(n);
+      if (bore)
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < stack_joints[k + 1].n_points(); ++j)
+            u[i] += compliance(b)(i, n + j) * state.force[0][j];
+      else
+        {
+          const unsigned int n_in = stack_joints[k - 1].n_points();
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n_in; ++j)
+              u[i]
+                += compliance(b)(n_in + i, j) * state.force[k - 1 - first][j];
+        }
+      return u;
+    };
+    const Vector<double> at_rest = surface(part_assembly(first, last, true));
+    // How far the joint opens per kelvin at dT (the bore growing, the
+    // outside shrinking): the body's free growth and what its joint's
+    // changed forces add, the least over the points.
+    const auto per_kelvin = [&](const double dT) {
+      const double         signed_dT = cooling ? -dT : dT;
+      const Vector<double> u
+        = surface(part_assembly(first, last, true, signed_dT, cooling));
+      double g = std::numeric_limits<double>::max();
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double moved
+            = u[i] - at_rest[i] + expansion(b, cooling) * signed_dT * R;
+          g = std::min(g, (bore ? moved : -moved) / dT);
+        }
+      return g;
+    };
+    // The temperature change dT = opening / (2 g(dT)): linear while the
+    // part's joints stay closed, a few fixed-point steps where one opens.
+    double dT = 1., g = per_kelvin(dT);
+    for (unsigned int step = 0; step < 20 && g > 0.; ++step)
+      {
+        const double next = opening / (2. * g);
+        const bool   done = std::abs(next - dT) <= 1e-10 * next;
+        dT                = next;
+        if (done)
+          break;
+        g = per_kelvin(dT);
+      }
+    return g > 0. ? g / R : unknown;
   }
 
 

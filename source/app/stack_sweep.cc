@@ -1,3 +1,4 @@
+#include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/app/stack_sweep.h>
 #include <coaxfit/base/input_error.h>
@@ -31,6 +32,14 @@ namespace coaxfit
     , verbose(verbose)
     , out(out)
   {}
+
+
+
+  namespace
+  {
+    /** The columns of sweep.csv per joint (see StackSweep::columns()). */
+    constexpr unsigned int per_joint = 7;
+  } // namespace
 
 
 
@@ -86,7 +95,9 @@ namespace coaxfit
 
     const std::string study
       = normalized_directory(base.output_directory()) + "_sweep";
-    ResultDirectory                directory(study, sweep.study_entries(study));
+    ResultDirectory                directory(study,
+                              all_result_file_names(),
+                              sweep.study_entries(study));
     const std::vector<std::string> names = columns(base.bodies);
     std::vector<Row>               rows(sweep.values.size());
     for (unsigned int i = 0; i < sweep.values.size(); ++i)
@@ -122,7 +133,9 @@ namespace coaxfit
                     f.p_mean,
                     f.closed ? 1. : 0.,
                     f.slip_safety > 0. ? f.slip_safety : std::nan(""),
-                    f.press_in_force})
+                    f.press_in_force,
+                    f.heat_outer_to,
+                    f.cool_inner_to})
                 row.values.push_back(v);
             for (const BodyFigures &f : fit.body_figures())
               for (const double v :
@@ -149,10 +162,13 @@ namespace coaxfit
     for (const Row &row : rows)
       any = any || row.written;
     // The table: each value, its exit code and figures.
+    std::size_t width = 12;
+    for (const std::string &value : sweep.values)
+      width = std::max(width, value.size() + 2);
     std::ostringstream table;
     table << "\ncoaxfit: sweep of " << sweep.entry << " over "
           << sweep.values.size() << " values of " << filename << '\n'
-          << std::left << std::setw(16) << "  value" << std::right
+          << "  " << std::left << std::setw(width) << "value" << std::right
           << std::setw(6) << "exit" << std::setw(7) << "steps";
     for (unsigned int k = 0; k < base.n_joints(); ++k)
       table << std::setw(std::max<int>(16, base.joint_name(k).size() + 8))
@@ -161,7 +177,7 @@ namespace coaxfit
     for (unsigned int i = 0; i < rows.size(); ++i)
       {
         const Row &row = rows[i];
-        table << "  " << std::left << std::setw(14) << sweep.values[i]
+        table << "  " << std::left << std::setw(width) << sweep.values[i]
               << std::right << std::setw(6) << row.exit_code;
         if (row.written)
           {
@@ -169,7 +185,7 @@ namespace coaxfit
             for (unsigned int k = 0; k < base.n_joints(); ++k)
               table << std::setw(
                 std::max<int>(16, base.joint_name(k).size() + 8))
-                    << row.values[1 + 5 * k + 1];
+                    << row.values[1 + per_joint * k + 1];
             table << "  " << row.verdict;
           }
         if (!row.error.empty())
@@ -183,8 +199,11 @@ namespace coaxfit
     if (!any)
       {
         out << "coaxfit: no value of the sweep gave a result; nothing "
-               "written, the earlier results in "
-            << study << " are untouched" << std::endl;
+               "written"
+            << (fs::exists(study) ?
+                  ", the earlier results in " + study + " are untouched" :
+                  std::string())
+            << std::endl;
         return std::max(1, code);
       }
 
@@ -208,8 +227,15 @@ namespace coaxfit
         csv << ',' << csv_field(row.error) << '\n';
       }
     close_result_file(csv, csv_name);
+    // The plot's axis is a scale if every value written is a number (a
+    // refused one has no figures to draw).
+    SweepSpec written = sweep;
+    written.values.clear();
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      if (rows[i].written)
+        written.values.push_back(sweep.values[i]);
     const std::string plotted
-      = base.write_plots && sweep.numeric() ?
+      = base.write_plots && written.numeric() ?
           plot(directory.staging_path(), base.n_joints()) :
           std::string("sweep.png not drawn (")
             + (base.write_plots ? "values not numbers" :
@@ -228,13 +254,15 @@ namespace coaxfit
                    const unsigned int n_joints) const
   {
     // Columns of sweep.csv: 1 value, 2 exit code, 3 verdict, 4 steps, then
-    // five per joint from 5 (p(0), p_mean, closed, slip safety, force).
+    // per_joint per joint from 5 (p(0), p_mean, closed, slip safety,
+    // force, joining temperatures).
     std::ostringstream gp;
     gp << "set key top left noenhanced autotitle columnheader\n"
        << "set ylabel 'mean contact pressure (MPa)'\n"
        << "plot ";
     for (unsigned int k = 0; k < n_joints; ++k)
-      gp << (k > 0 ? ", \\\n     " : "") << "'sweep.csv' using 1:" << 6 + 5 * k
+      gp << (k > 0 ? ", \\\n     " : "")
+         << "'sweep.csv' using 1:" << 6 + per_joint * k
          << " with linespoints pt 7";
     gp << '\n';
     return sweep.draw(directory,

@@ -146,7 +146,8 @@ namespace coaxfit
 
 
   ResultDirectory::ResultDirectory(const std::string           &given_name,
-                                   const std::set<std::string> &result_files)
+                                   const std::set<std::string> &result_files,
+                                   const std::set<std::string> &top_level)
   {
     // As given in the messages; a trailing slash would name no directory.
     const std::string &target_name = given_name;
@@ -177,10 +178,14 @@ namespace coaxfit
         for (auto entry = fs::recursive_directory_iterator(target, error);
              entry != fs::recursive_directory_iterator();
              entry.increment(error))
-          if ((result_files.count(entry->path().filename().string()) == 0
-               && !(entry.depth() <= 1 && entry->is_regular_file()
-                    && assembly_result_file(entry->path().filename().string())))
-              || (entry->is_directory() && entry.depth() > 0))
+          if (!top_level.empty() && entry.depth() == 0 ?
+                top_level.count(entry->path().filename().string()) == 0 :
+                (result_files.count(entry->path().filename().string()) == 0
+                 && !(
+                   entry.depth() <= 1 && entry->is_regular_file()
+                   && assembly_result_file(entry->path().filename().string())))
+                  || (entry->is_directory()
+                      && entry.depth() > (top_level.empty() ? 0 : 1)))
             refuse(target_name,
                    "contains '" + fs::relative(entry->path(), target).string()
                      + "', which coaxfit does not write; the results replace "

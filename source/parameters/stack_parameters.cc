@@ -1114,10 +1114,16 @@ namespace coaxfit
                 }
               catch (const InputError &error)
                 {
-                  // iso_fit() names Fit/ISO fit: say which joint.
-                  throw InputError(
-                    std::string(error.what()) + " (joint " + p.joint_name(k)
-                    + ", D " + number(p.rings[k].outer_diameter) + " mm)");
+                  // iso_fit() names Fit/ISO fit: say which joint, and
+                  // the joint's own entry where it gives the fit.
+                  std::string       message = error.what();
+                  const std::string generic = "Fit/ISO fit";
+                  const std::size_t at      = message.find(generic);
+                  if (mine && at != std::string::npos)
+                    message.replace(at, generic.size(), path + "ISO fit");
+                  throw InputError(message + " (joint " + p.joint_name(k)
+                                   + ", D " + number(p.rings[k].outer_diameter)
+                                   + " mm)");
                 }
             }();
             const double U_min = 1e-3 * iso.min_interference();

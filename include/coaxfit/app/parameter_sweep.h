@@ -11,7 +11,9 @@ namespace coaxfit
 {
   /**
    * `--sweep Section/Name=v1,v2,...` or `--sweep Section/Name=from:to:count`
-   * (count values evenly spaced from from to to, both included).
+   * (count values evenly spaced from from to to, both included), or
+   * `v1;v2;...` for values that contain commas (Assembly/Order's lists of
+   * joints).
    */
   struct SweepSpec
   {
@@ -29,9 +31,10 @@ namespace coaxfit
     std::string
     directory_name(unsigned int index) const;
     /**
-     * What the study directory @p study may hold: a run's files, the
-     * table and plot, the value subdirectories of this study and of an
-     * earlier one (recognized by its sweep.csv).
+     * What the study directory @p study may hold directly: the table and
+     * plot, the value subdirectories of this study and of an earlier one
+     * (recognized by its sweep.csv). The value subdirectories hold a
+     * run's files.
      */
     std::set<std::string>
     study_entries(const std::string &study) const;

@@ -385,10 +385,35 @@ namespace coaxfit
      * monolithically on the bodies' compliances on its joints' points,
      * unilateral (parts being pressed together cannot bond);
      * its joints at their largest interferences if @p largest, else at
-     * those in use.
+     * those in use; heated as a whole by @p heating kelvin (negative:
+     * cooled, with the cooling coefficients if @p cooling).
      */
     StackState
-    part_assembly(unsigned int first, unsigned int last, bool largest) const;
+    part_assembly(unsigned int first,
+                  unsigned int last,
+                  bool         largest,
+                  double       heating = 0.,
+                  bool         cooling = false) const;
+    /** Body @p b's coefficient of expansion for heating or @p cooling. */
+    double
+    expansion(unsigned int b, bool cooling) const;
+    /**
+     * The coefficient (1/K) by which the part of bodies @p first to @p last
+     * opens joint @p k when heated (the outer part, its bore growing) or
+     * @p cooling (the inner part, its outside shrinking) by the
+     * temperature change that opens it by @p opening (mm, diametral):
+     * the joint's body's own alpha for a part of one body (DIN 7190),
+     * otherwise the part's, whose joints' forces change with their
+     * bodies' different expansions (solved on the condensed compliances,
+     * a few fixed-point steps where a joint opens). NaN if a body of the
+     * part has no coefficient.
+     */
+    double
+    part_expansion(unsigned int k,
+                   unsigned int first,
+                   unsigned int last,
+                   bool         cooling,
+                   double       opening) const;
     /**
      * The press-in figures of joint @p k into @p f: its pressure in the
      * part-assembly present when it is pressed (Assembly/Order).

@@ -17,7 +17,8 @@ namespace coaxfit
    * less), its results in a subdirectory `NN_value/` of the study
    * `<Output/Directory>_sweep`. The study directory also gets sweep.csv
    * (the value, the run's exit code, convergence, steps and verdict, each
-   * joint's pressures, contact, slip safety and press-in force, each
+   * joint's pressures, contact, slip safety, press-in force and joining
+   * temperatures, each
    * body's von Mises stress and safety) and, for numeric values, sweep.png
    * (each joint's mean pressure against the value) with sweep.gp.
    *

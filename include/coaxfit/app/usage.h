@@ -24,6 +24,7 @@ namespace coaxfit
       "  --quiet                    print only the final report and errors\n"
       "                             (of several cases: only the table)\n"
       "  --sweep Section/Name=v1,v2,...   or   Section/Name=from:to:count\n"
+      "                             (v1;v2;... for values with commas)\n"
       "                             run FILE.prm once for each value; the\n"
       "                             study goes to its Output/Directory with\n"
       "                             _sweep appended: sweep.csv, sweep.png\n"

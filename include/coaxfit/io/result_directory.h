@@ -45,10 +45,14 @@ namespace coaxfit
   public:
     /**
      * Check @p target and create the staging directory; throws InputError
-     * naming Output/Directory if the target cannot be used.
+     * naming Output/Directory if the target cannot be used. Everything in
+     * it must be a file coaxfit writes (@p result_files, at any depth);
+     * with @p top_level (a study), what lies directly in it must be one
+     * of those names instead (its table, plot and value directories).
      */
     ResultDirectory(const std::string           &target,
-                    const std::set<std::string> &result_files);
+                    const std::set<std::string> &result_files,
+                    const std::set<std::string> &top_level = {});
 
     /** Removes the staging directory unless committed. */
     ~ResultDirectory();

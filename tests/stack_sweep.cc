@@ -161,6 +161,13 @@ main()
             << (std::filesystem::exists("study_sweep/sweep.png") ? "drawn" :
                                                                    "MISSING")
             << '\n';
+  // Every row has a field for each column (the error field empty).
+  bool same = true;
+  for (const auto &row : csv)
+    same
+      = same && row.size() + 1 >= csv[0].size() && row.size() <= csv[0].size();
+  std::cout << "  " << csv[0].size()
+            << " columns, every row as many: " << (same ? "yes" : "NO") << '\n';
   const unsigned int mean_0 = column(csv[0], "Shaft-Sleeve_pressure_mean_MPa");
   const unsigned int mean_1 = column(csv[0], "Sleeve-Hub_pressure_mean_MPa");
   const std::vector<std::string> directories

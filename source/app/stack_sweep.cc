@@ -52,7 +52,9 @@ namespace coaxfit
                                       "_pressure_mean_MPa",
                                       "_closed",
                                       "_safety_slip",
-                                      "_press_in_force_N"})
+                                      "_press_in_force_N",
+                                      "_joining_heat_outer_to_C",
+                                      "_joining_cool_inner_to_C"})
         names.push_back(bodies[k] + "-" + bodies[k + 1] + field);
     for (const std::string &b : bodies)
       for (const std::string field :

@@ -287,12 +287,10 @@ namespace coaxfit
     else
       md << "the staggered Dirichlet-Neumann process over all joints ("
          << (p.ordering == StackOrdering::jacobi ? "Jacobi" : "Gauss-Seidel")
-         << "), "
-         << (converged ? "converged in " :
-                         "NOT converged in (Coupling/Max "
-                         "steps) ")
-         << steps << " steps (" << body_solves << " body solves), tolerance "
-         << p.tolerance << ".\n";
+         << "), " << (converged ? "converged in " : "NOT converged in ")
+         << steps << (converged ? " steps" : " steps (Coupling/Max steps)")
+         << " (" << body_solves << " body solves), tolerance " << p.tolerance
+         << ".\n";
     // The files as written (without VTU files, plots or the convergence
     // plot of a monolithic run, the list is shorter).
     std::set<std::string> files = {"report.md"};

@@ -466,26 +466,12 @@ namespace coaxfit
 
     // What the parts add to the joint's largest interference before it is
     // made: the inner part's outside grown, the outer part's bore closed
-    // by the joints already made (u = C F on their points).
-    const unsigned int n = joint.n_points();
-    Vector<double>     change(n);
+    // by the joints already made.
+    Vector<double> change(joint.n_points());
     if (k > first)
-      {
-        const StackState   inner = part_assembly(first, k, true);
-        const unsigned int n_in  = stack_joints[k - 1].n_points();
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < n_in; ++j)
-            change[i]
-              += compliance(k)(n_in + i, j) * inner.force[k - 1 - first][j];
-      }
+      change += part_surface(k, first, part_assembly(first, k, true));
     if (last > k + 1)
-      {
-        const StackState   outer = part_assembly(k + 1, last, true);
-        const unsigned int n_out = stack_joints[k + 1].n_points();
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < n_out; ++j)
-            change[i] -= compliance(k + 1)(i, n + j) * outer.force[0][j];
-      }
+      change -= part_surface(k, k + 1, part_assembly(k + 1, last, true));
     f.joining_growth = 2. * *std::max_element(change.begin(), change.end());
   }
 
@@ -848,6 +834,31 @@ namespace coaxfit
 
 
 
+  Vector<double>
+  StackFit::part_surface(const unsigned int k,
+                         const unsigned int first,
+                         const StackState  &state) const
+  {
+    // The outer part's bore (body k + 1, its outer joint the part's first)
+    // or the inner part's outside (body k, its bore joint the part's last).
+    const unsigned int n = stack_joints[k].n_points();
+    Vector<double>     u(n);
+    if (first == k + 1)
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < stack_joints[k + 1].n_points(); ++j)
+          u[i] += compliance(k + 1)(i, n + j) * state.force[0][j];
+    else
+      {
+        const unsigned int n_in = stack_joints[k - 1].n_points();
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n_in; ++j)
+            u[i] += compliance(k)(n_in + i, j) * state.force[k - 1 - first][j];
+      }
+    return u;
+  }
+
+
+
   double
   StackFit::expansion(const unsigned int b, const bool cooling) const
   {
@@ -875,34 +886,19 @@ namespace coaxfit
     if (first == last || !(opening > 0.))
       return expansion(b, cooling);
 
-    // The surface's displacement under the forces of the part's joint
-    // next to it (u = C F on its points).
-    const double       R       = parameters.joint_diameter(k) / 2.;
-    const unsigned int n       = stack_joints[k].n_points();
-    const auto         surface = [&](const StackState &state) {
-      Vector<double> u(n);
-      if (bore)
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < stack_joints[k + 1].n_points(); ++j)
-            u[i] += compliance(b)(i, n + j) * state.force[0][j];
-      else
-        {
-          const unsigned int n_in = stack_joints[k - 1].n_points();
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n_in; ++j)
-              u[i]
-                += compliance(b)(n_in + i, j) * state.force[k - 1 - first][j];
-        }
-      return u;
-    };
-    const Vector<double> at_rest = surface(part_assembly(first, last, true));
+    const double         R = parameters.joint_diameter(k) / 2.;
+    const unsigned int   n = stack_joints[k].n_points();
+    const Vector<double> at_rest
+      = part_surface(k, first, part_assembly(first, last, true));
     // How far the joint opens per kelvin at dT (the bore growing, the
     // outside shrinking): the body's free growth and what its joint's
     // changed forces add, the least over the points.
     const auto per_kelvin = [&](const double dT) {
       const double         signed_dT = cooling ? -dT : dT;
       const Vector<double> u
-        = surface(part_assembly(first, last, true, signed_dT, cooling));
+        = part_surface(k,
+                       first,
+                       part_assembly(first, last, true, signed_dT, cooling));
       double g = std::numeric_limits<double>::max();
       for (unsigned int i = 0; i < n; ++i)
         {

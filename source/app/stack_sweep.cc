@@ -37,8 +37,41 @@ namespace coaxfit
 
   namespace
   {
-    /** The columns of sweep.csv per joint (see StackSweep::columns()). */
-    constexpr unsigned int per_joint = 7;
+    /** A column of sweep.csv: its name's suffix and its figure. */
+    template <typename Figures>
+    struct Column
+    {
+      const char *suffix;
+      double (*value)(const Figures &);
+    };
+
+    /** Each joint's columns, in order (NaN: none, an empty field). */
+    const std::vector<Column<JointFigures>> joint_columns
+      = {{"_pressure_mid_plane_MPa",
+          [](const JointFigures &f) { return f.p_mid; }},
+         {"_pressure_mean_MPa", [](const JointFigures &f) { return f.p_mean; }},
+         {"_closed", [](const JointFigures &f) { return f.closed ? 1. : 0.; }},
+         {"_safety_slip",
+          [](const JointFigures &f) {
+            return f.slip_safety > 0. ? f.slip_safety : std::nan("");
+          }},
+         {"_press_in_force_N",
+          [](const JointFigures &f) { return f.press_in_force; }},
+         {"_joining_heat_outer_to_C",
+          [](const JointFigures &f) { return f.heat_outer_to; }},
+         {"_joining_cool_inner_to_C",
+          [](const JointFigures &f) { return f.cool_inner_to; }}};
+
+    /** Each body's columns, in order. */
+    const std::vector<Column<BodyFigures>> body_columns
+      = {{"_von_mises_mid_plane_MPa",
+          [](const BodyFigures &f) { return f.von_mises_mid_plane; }},
+         {"_safety_yield", [](const BodyFigures &f) {
+            return f.yield_safety > 0. ? f.yield_safety : std::nan("");
+          }}};
+
+    /** The columns of sweep.csv per joint. */
+    const unsigned int per_joint = joint_columns.size();
   } // namespace
 
 
@@ -48,18 +81,11 @@ namespace coaxfit
   {
     std::vector<std::string> names;
     for (unsigned int k = 0; k + 1 < bodies.size(); ++k)
-      for (const std::string field : {"_pressure_mid_plane_MPa",
-                                      "_pressure_mean_MPa",
-                                      "_closed",
-                                      "_safety_slip",
-                                      "_press_in_force_N",
-                                      "_joining_heat_outer_to_C",
-                                      "_joining_cool_inner_to_C"})
-        names.push_back(bodies[k] + "-" + bodies[k + 1] + field);
+      for (const auto &column : joint_columns)
+        names.push_back(bodies[k] + "-" + bodies[k + 1] + column.suffix);
     for (const std::string &b : bodies)
-      for (const std::string field :
-           {"_von_mises_mid_plane_MPa", "_safety_yield"})
-        names.push_back(b + field);
+      for (const auto &column : body_columns)
+        names.push_back(b + column.suffix);
     return names;
   }
 
@@ -130,20 +156,11 @@ namespace coaxfit
             row.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
             row.values.push_back(fit.n_steps());
             for (const JointFigures &f : fit.joint_figures())
-              for (const double v :
-                   {f.p_mid,
-                    f.p_mean,
-                    f.closed ? 1. : 0.,
-                    f.slip_safety > 0. ? f.slip_safety : std::nan(""),
-                    f.press_in_force,
-                    f.heat_outer_to,
-                    f.cool_inner_to})
-                row.values.push_back(v);
+              for (const auto &column : joint_columns)
+                row.values.push_back(column.value(f));
             for (const BodyFigures &f : fit.body_figures())
-              for (const double v :
-                   {f.von_mises_mid_plane,
-                    f.yield_safety > 0. ? f.yield_safety : std::nan("")})
-                row.values.push_back(v);
+              for (const auto &column : body_columns)
+                row.values.push_back(column.value(f));
             if (row.exit_code == 2)
               row.error = "not converged: written with converged false";
           }

@@ -394,6 +394,16 @@ namespace coaxfit
                   bool         largest,
                   double       heating = 0.,
                   bool         cooling = false) const;
+    /**
+     * The radial displacement (mm) at the points of joint @p k of a part
+     * of at least two bodies from @p first in @p state (part_assembly()):
+     * the outer part's bore (first = k + 1) or the inner part's outside
+     * (it ends at body k), u = C F of the part's joint next to it.
+     */
+    Vector<double>
+    part_surface(unsigned int      k,
+                 unsigned int      first,
+                 const StackState &state) const;
     /** Body @p b's coefficient of expansion for heating or @p cooling. */
     double
     expansion(unsigned int b, bool cooling) const;

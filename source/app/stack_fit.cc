@@ -12,6 +12,7 @@
 #include <coaxfit/design/operation_analysis.h>
 #include <coaxfit/fe/body_stress.h>
 #include <coaxfit/fe/stack_mesh.h>
+#include <coaxfit/fe/stack_sections.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/parameters/operation_entries.h>
 #include <coaxfit/parameters/parameter_checks.h>
@@ -172,30 +173,60 @@ namespace coaxfit
       double       needed = 0., points = 0.;
       const double refined = std::pow(2., parameters.mesh.global_refinements);
       const unsigned int p = parameters.mesh.degree;
-      for (const StackRing &ring : stack_rings(parameters))
+      if (parameters.sections)
         {
-          const double n_r = p * ring.radial.size() * refined + 1.;
-          const double n_z = p * ring.axial.size() * refined + 1.;
-          const double n_points
-            = n_z * ((ring.inner_contact > 0.) + (ring.outer_contact > 0.));
-          needed += estimated_memory(static_cast<std::size_t>(
-                                       std::min(2. * n_r * n_z, 1e15)),
-                                     p)
-                    + 3. * 8. * n_points * n_points;
-          points += n_points;
+          // Graded cells of about 4 times the cell size on average; the
+          // joints' points at the finest size (both estimates generous).
+          const StackSections &sections = *parameters.sections;
+          double               h        = parameters.mesh.cell_size;
+          if (h == 0.)
+            {
+              h = std::numeric_limits<double>::infinity();
+              for (unsigned int k = 0; k < parameters.n_joints(); ++k)
+                h = std::min(h, sections.joint_half_length(k) / 50.);
+            }
+          for (unsigned int b = 0; b < sections.n_bodies(); ++b)
+            {
+              const double cells = sections.modelled(b).area() / (16. * h * h)
+                                   * refined * refined;
+              double n_points = 0.;
+              for (const unsigned int k : {b - 1, b})
+                if (k < parameters.n_joints())
+                  n_points
+                    += p * sections.joint_half_length(k) / h * refined + 1.;
+              needed += estimated_memory(static_cast<std::size_t>(
+                                           std::min(2. * p * p * cells, 1e15)),
+                                         p)
+                        + 3. * 8. * n_points * n_points;
+              points += n_points;
+            }
         }
+      else
+        for (const StackRing &ring : stack_rings(parameters))
+          {
+            const double n_r = p * ring.radial.size() * refined + 1.;
+            const double n_z = p * ring.axial.size() * refined + 1.;
+            const double n_points
+              = n_z * ((ring.inner_contact > 0.) + (ring.outer_contact > 0.));
+            needed += estimated_memory(static_cast<std::size_t>(
+                                         std::min(2. * n_r * n_z, 1e15)),
+                                       p)
+                      + 3. * 8. * n_points * n_points;
+            points += n_points;
+          }
       needed += 2. * 8. * points * points; // the monolithic matrix
       const double available = available_memory();
       if (needed > available)
-        throw InputError(
-          "parameter Mesh/Global refinements = "
-          + std::to_string(parameters.mesh.global_refinements) + ": the "
-          + std::to_string(parameters.bodies.size()) + " bodies need about "
-          + std::to_string(static_cast<long>(needed / 1e9 + 0.5))
-          + " GB of memory, more than the "
-          + std::to_string(static_cast<long>(available / 1e9))
-          + " GB available; use fewer Global refinements or Axial/Radial "
-            "cells");
+        throw InputError("parameter Mesh/Global refinements = "
+                         + std::to_string(parameters.mesh.global_refinements)
+                         + ": the " + std::to_string(parameters.bodies.size())
+                         + " bodies need about "
+                         + std::to_string(static_cast<long>(needed / 1e9 + 0.5))
+                         + " GB of memory, more than the "
+                         + std::to_string(static_cast<long>(available / 1e9))
+                         + " GB available; use fewer Global refinements or "
+                         + (parameters.sections ? "a larger Mesh/Cell size" :
+                                                  "Axial/Radial cells"));
     }
   } // namespace
 
@@ -213,6 +244,11 @@ namespace coaxfit
     const auto                   start = std::chrono::steady_clock::now();
     const unsigned int           N     = parameters.bodies.size();
     const std::vector<StackRing> rings = stack_rings(parameters);
+    // Sections: every body meshed by gmsh at once (the two bodies of a
+    // joint with its vertices), each body's mesh copied from its own.
+    std::vector<std::shared_ptr<Triangulation<2>>> section_meshes;
+    if (parameters.sections)
+      section_meshes = parameters.sections->make_meshes(section_settings());
     for (unsigned int b = 0; b < N; ++b)
       {
         const StackRing ring = rings[b];
@@ -239,8 +275,14 @@ namespace coaxfit
                                                parameters.mesh.degree,
                                                false,
                                                load));
-        bodies.back()->set_mesh_builder(
-          [ring](Triangulation<2> &t) { make_stack_ring_mesh(t, ring); });
+        if (parameters.sections)
+          bodies.back()->set_mesh_builder(
+            [mesh = section_meshes[b]](Triangulation<2> &t) {
+              t.copy_triangulation(*mesh);
+            });
+        else
+          bodies.back()->set_mesh_builder(
+            [ring](Triangulation<2> &t) { make_stack_ring_mesh(t, ring); });
         bodies.back()->setup_system();
         bodies.back()->assemble_system();
         solvers.push_back(std::make_unique<BodySolver>(*bodies.back()));
@@ -347,6 +389,36 @@ namespace coaxfit
         alpha.push_back(k_out / (k_in + k_out));
       }
     timing["setup"] = seconds_since(start);
+  }
+
+
+
+  SectionMeshSettings
+  StackFit::section_settings() const
+  {
+    SectionMeshSettings settings;
+    double              l_min = std::numeric_limits<double>::infinity();
+    for (unsigned int k = 0; k < parameters.n_joints(); ++k)
+      l_min = std::min(l_min, 2. * parameters.sections->joint_half_length(k));
+    settings.cell_size          = parameters.mesh.cell_size > 0. ?
+                                    parameters.mesh.cell_size :
+                                    l_min / 100.;
+    settings.grading_ratio      = parameters.mesh.grading_ratio;
+    settings.global_refinements = parameters.mesh.global_refinements;
+    return settings;
+  }
+
+
+
+  double
+  StackFit::surface_radius(const unsigned int b, const bool bore) const
+  {
+    if (parameters.section_text[b].empty())
+      return (bore ? parameters.rings[b].inner_diameter :
+                     parameters.rings[b].outer_diameter)
+             / 2.;
+    return bore ? parameters.sections->bore_radius(b) :
+                  parameters.sections->outer_radius(b);
   }
 
 
@@ -546,11 +618,9 @@ namespace coaxfit
     while (name != parameters.bodies[b] + " bore"
            && name != parameters.bodies[b] + " outer")
       ++b;
-    const bool   bore = name == parameters.bodies[b] + " bore";
-    const double R    = (bore ? parameters.rings[b].inner_diameter :
-                                parameters.rings[b].outer_diameter)
-                     / 2.;
-    const BodyDiscretization                   &body = *bodies[b];
+    const bool                bore = name == parameters.bodies[b] + " bore";
+    const double              R    = surface_radius(b, bore);
+    const BodyDiscretization &body = *bodies[b];
     std::map<types::global_dof_index, Point<2>> points;
     DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
                                          body.get_dof_handler(),
@@ -682,11 +752,15 @@ namespace coaxfit
     f.name                = parameters.bodies[b];
     f.von_mises_mid_plane = f.von_mises_max = 0.;
     f.hoop_mid_plane = -std::numeric_limits<double>::infinity();
-    for (const double d : {parameters.rings[b].inner_diameter,
-                           parameters.rings[b].outer_diameter})
-      if (d > 0.)
-        for (const StressState &s :
-             stresses_along_radius(*bodies[b], field, d / 2.))
+    // A ring's bore and outside; a section's joints (its equivalent
+    // ring's diameters) and its smallest and largest radius.
+    std::set<double> radii = {parameters.rings[b].inner_diameter / 2.,
+                              parameters.rings[b].outer_diameter / 2.};
+    if (parameters.sections)
+      radii.insert({surface_radius(b, true), surface_radius(b, false)});
+    for (const double r : radii)
+      if (r > 0.)
+        for (const StressState &s : stresses_along_radius(*bodies[b], field, r))
           {
             f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
             if (s.z == 0.)

@@ -2,6 +2,7 @@
 #include <coaxfit/fe/mesh.h>
 #include <coaxfit/fe/section_file.h>
 #include <coaxfit/fe/section_joint.h>
+#include <coaxfit/fe/section_placement.h>
 #include <coaxfit/fe/section_scene.h>
 #include <coaxfit/fe/section_symmetry.h>
 #include <coaxfit/parameters/parameter_checks.h>
@@ -18,85 +19,6 @@ namespace coaxfit
     const std::string both
       = "parameters " + shaft_entry + " and " + hub_entry + ": ";
 
-    /** @p outline moved by @p dz along the axis (same entry). */
-    SectionOutline
-    shifted(const SectionOutline &outline, const double dz)
-    {
-      std::vector<OutlineCorner> corners = outline.corners();
-      for (OutlineCorner &c : corners)
-        c.z += dz;
-      corners.push_back(corners.front()); // closed explicitly
-      return SectionOutline(corners, outline.entry());
-    }
-
-    /**
-     * @p outline with every corner within @p tol of the line through @p a
-     * and @p b (a cylinder or a cone in (r, z)) moved radially onto it.
-     */
-    SectionOutline
-    snapped(const SectionOutline &outline,
-            const Point<2>       &a,
-            const Point<2>       &b,
-            const double          tol)
-    {
-      const Tensor<1, 2>         along   = (b - a) / (b - a).norm();
-      std::vector<OutlineCorner> corners = outline.corners();
-      for (OutlineCorner &c : corners)
-        {
-          const Point<2> p(0.5 * c.diameter, c.z);
-          if (std::abs(along[0] * (p - a)[1] - along[1] * (p - a)[0]) > tol)
-            continue;
-          // The line's r at this z (a cylinder: its radius).
-          const double r
-            = std::abs(b[1] - a[1]) > 0. ?
-                a[0] + (c.z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) :
-                a[0];
-          c.diameter = 2. * r;
-        }
-      corners.push_back(corners.front()); // closed explicitly
-      return SectionOutline(corners, outline.entry());
-    }
-
-    /**
-     * @p pieces with neighbours on one straight line joined (a corner of
-     * an outline on the joint splits it without changing it).
-     */
-    std::vector<JointPiece>
-    merged(std::vector<JointPiece> pieces, const double tol)
-    {
-      std::sort(pieces.begin(),
-                pieces.end(),
-                [](const JointPiece &a, const JointPiece &b) {
-                  return std::min(a.start[1], a.end[1])
-                         < std::min(b.start[1], b.end[1]);
-                });
-      std::vector<JointPiece> result;
-      for (JointPiece piece : pieces)
-        {
-          if (piece.start[1] > piece.end[1])
-            std::swap(piece.start, piece.end);
-          if (!result.empty() && result.back().end.distance(piece.start) <= tol
-              && (result.back().normal - piece.normal).norm() <= 1e-9
-              && std::abs(result.back().start[0] - piece.end[0]) <= tol)
-            result.back().end = piece.end;
-          else
-            result.push_back(piece);
-        }
-      return result;
-    }
-
-    /** Smallest and largest z of the corners of @p outline. */
-    std::pair<double, double>
-    axial_range(const SectionOutline &outline)
-    {
-      double lo = outline.corners().front().z, hi = lo;
-      for (const OutlineCorner &c : outline.corners())
-        {
-          lo = std::min(lo, c.z);
-          hi = std::max(hi, c.z);
-        }
-      return {lo, hi};
-    }
     /**
      * Whether @p mesh has a boundary face with id @p id for which
      * @p accept (the face) holds.
@@ -660,25 +582,8 @@ namespace coaxfit
                                const double grading_ratio,
                                const double max_cell_size) const
   {
-    // Sizes from the end of the joint towards its middle.
-    std::vector<double> sizes;
-    double              sum = 0., h = cell_size;
-    while (sum < half_length * (1. - 1e-9) && sizes.size() < 100000)
-      {
-        sizes.push_back(h);
-        sum += h;
-        h = std::min(h * grading_ratio, max_cell_size);
-      }
-    // The last cell overshoots: shrink all in proportion. Distances from
-    // the middle of the joint, descending.
-    const double        scale = half_length / sum;
-    std::vector<double> from_middle;
-    double              d = half_length;
-    for (unsigned int k = 0; k + 1 < sizes.size(); ++k)
-      {
-        d -= sizes[k] * scale;
-        from_middle.push_back(d);
-      }
+    const std::vector<double> from_middle
+      = joint_offsets(half_length, cell_size, grading_ratio, max_cell_size);
     const double          middle = joint_start() + (half ? 0. : half_length);
     std::vector<Point<2>> vertices;
     if (!half)
@@ -731,36 +636,17 @@ namespace coaxfit
     joint.vertices
       = joint_vertices(settings.cell_size, settings.grading_ratio, h_max);
     // A corner of either outline inside the joint (on a straight line)
-    // is a vertex of its mesh: it must be one of both, replacing the
-    // nearest vertex if that is close.
+    // is a vertex of its mesh: it must be one of both.
     {
-      const double tol
-        = 1e-9 * std::max(modelled(true).extent(), modelled(false).extent());
       std::vector<double> z;
       for (const Point<2> &v : joint.vertices)
         z.push_back(v[1]);
-      for (const bool shaft_side : {true, false})
-        for (const OutlineCorner &c : modelled(shaft_side).corners())
-          if (std::abs(0.5 * c.diameter - joint_radius_at(c.z)) <= tol
-              && c.z > joint_start() + tol && c.z < joint_end() - tol)
-            {
-              std::vector<double> all = {joint_start()};
-              all.insert(all.end(), z.begin(), z.end());
-              all.push_back(joint_end());
-              const auto   next = std::lower_bound(all.begin(), all.end(), c.z);
-              const double cell = *next - *(next - 1);
-              auto         near = std::min_element(z.begin(),
-                                           z.end(),
-                                           [&](const double a, const double b) {
-                                             return std::abs(a - c.z)
-                                                    < std::abs(b - c.z);
-                                           });
-              if (near != z.end() && std::abs(*near - c.z) < 0.3 * cell)
-                *near = c.z;
-              else
-                z.insert(std::lower_bound(z.begin(), z.end(), c.z), c.z);
-            }
-      std::sort(z.begin(), z.end());
+      z = with_corners(
+        z,
+        {&modelled(true), &modelled(false)},
+        [this](const double zi) { return joint_radius_at(zi); },
+        joint_start(),
+        joint_end());
       joint.vertices.clear();
       for (const double zi : z)
         joint.vertices.emplace_back(joint_radius_at(zi), zi);

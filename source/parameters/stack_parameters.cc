@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -480,6 +481,19 @@ namespace coaxfit
         prm.enter_subsection(bodies[b]);
         rings[b].declare_parameters(prm, bodies[b]);
         prm.leave_subsection();
+        prm.add_parameter(
+          bodies[b] + " section",
+          section_text[b],
+          "The section of " + bodies[b]
+            + " as drawn, instead of the plain ring Geometry/" + bodies[b]
+            + ": a closed outline of points z, D (mm; a third number a "
+              "fillet radius) separated by ';', the last repeating the "
+              "first, in the drawing's coordinates shared by every body "
+              "(a gear wheel with its web, a flanged sleeve). Its joints "
+              "with its neighbours are found where the sections meet, each "
+              "one cylinder; the stack must be symmetric about one plane "
+              "through the middle of every joint. Empty: the plain ring.",
+          Patterns::Anything());
       }
     prm.leave_subsection();
 
@@ -618,6 +632,18 @@ namespace coaxfit
                       mesh.grading_ratio,
                       "Ratio of neighbouring cell sizes. Allowed: 1 to 10.",
                       Patterns::Double(1., 10.));
+    prm.add_parameter("Cell size",
+                      mesh.cell_size,
+                      "Sections only (Geometry/<body> section): the size "
+                      "of the cells at the ends of the joints and at "
+                      "re-entrant corners in mm before global refinement; "
+                      "away from them cells grow by Mesh/Grading ratio per "
+                      "cell up to 8 times this size. The two bodies of a "
+                      "joint get the same vertices on it. 0: the shortest "
+                      "joint's l_F / 100. Mesh/Axial cells and Radial cells "
+                      "apply to plain rings only. Allowed: 0, or l_F / 1000 "
+                      "to l_F / 4 of the shortest joint.",
+                      Patterns::Double(0.));
     prm.add_parameter("Global refinements",
                       mesh.global_refinements,
                       "Uniform refinements of every body's mesh. Allowed: "
@@ -724,15 +750,18 @@ namespace coaxfit
   {
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        const std::string  path = "Geometry/" + bodies[b] + "/";
+        std::string        path = "Geometry/" + bodies[b] + "/";
         const RingDrawing &r    = rings[b];
+        if (!section_text[b].empty())
+          path = "Geometry/" + bodies[b] + " section: its equivalent ring's ";
         require(r.length > 0., path + "Length", r.length, "above 0 mm");
         require(r.outer_diameter > r.inner_diameter,
                 path + "Outer diameter",
                 r.outer_diameter,
                 "above " + path + "Inner diameter = " + number(r.inner_diameter)
                   + " mm");
-        if (b > 0)
+        // Where sections meet is checked by StackSections.
+        if (b > 0 && !sections)
           {
             require(r.inner_diameter > 0.,
                     path + "Inner diameter",
@@ -822,8 +851,11 @@ namespace coaxfit
     if (operation.bore_pressure > 0. && rings[0].inner_diameter == 0.)
       throw InputError("parameter Operation/" + bodies[0]
                        + " bore pressure = " + number(operation.bore_pressure)
-                       + ": the body " + bodies[0] + " is solid (Geometry/"
-                       + bodies[0] + "/Inner diameter = 0); allowed is 0");
+                       + ": the body " + bodies[0] + " is solid ("
+                       + (section_text[0].empty() ?
+                            "Geometry/" + bodies[0] + "/Inner diameter = 0" :
+                            "its section reaches the axis")
+                       + "); allowed is 0");
     // Fit/Case chooses among an ISO fit's interferences.
     bool iso = false;
     for (const JointFit &fit : fits)
@@ -869,7 +901,35 @@ namespace coaxfit
                            + "': the body " + bodies[0]
                            + " is solid (no bore)");
       }
-    mesh.validate();
+    if (sections)
+      {
+        double l_min = std::numeric_limits<double>::infinity();
+        for (unsigned int k = 0; k < n_joints(); ++k)
+          l_min = std::min(l_min, 2. * sections->joint_half_length(k));
+        if (mesh.cell_size != 0.)
+          require(mesh.cell_size >= l_min / 1000.
+                    && mesh.cell_size <= l_min / 4.,
+                  "Mesh/Cell size",
+                  mesh.cell_size,
+                  "0, or l_F / 1000 = " + number(l_min / 1000., 6)
+                    + " to l_F / 4 = " + number(l_min / 4., 6)
+                    + " mm of the shortest joint");
+        require(mesh.grading_ratio <= 3.,
+                "Mesh/Grading ratio",
+                mesh.grading_ratio,
+                "1 to 3 with sections");
+      }
+    else
+      {
+        if (mesh.cell_size != 0.)
+          throw InputError("parameter Mesh/Cell size = "
+                           + number(mesh.cell_size)
+                           + ": it sizes the meshes of sections, and no "
+                             "body has a Geometry/<body> section; allowed "
+                             "is 0 (plain rings take Mesh/Axial cells and "
+                             "Radial cells)");
+        mesh.validate();
+      }
   }
 
 
@@ -970,6 +1030,87 @@ namespace coaxfit
   namespace
   {
     /**
+     * The sections of @p p: for every body with `Geometry/<body> section`
+     * its ring entries must not be given (taken from @p missing), for the
+     * others they must; with any section, every body's outline (a ring's
+     * rectangle) is placed (StackSections) and a section body's ring
+     * becomes its equivalent one.
+     */
+    void
+    read_sections(StackParameters &p, std::set<std::string> &missing)
+    {
+      bool any = false;
+      for (unsigned int b = 0; b < p.bodies.size(); ++b)
+        {
+          std::string &text = p.section_text[b];
+          text.erase(0, text.find_first_not_of(" \t"));
+          text.erase(text.find_last_not_of(" \t") + 1);
+          if (text.empty())
+            continue;
+          any = true;
+          for (const std::string entry :
+               {"Inner diameter", "Outer diameter", "Length"})
+            if (missing.erase("Geometry." + p.bodies[b] + "." + entry) == 0)
+              throw InputError("parameter Geometry/" + p.bodies[b] + "/" + entry
+                               + ": give either Geometry/" + p.bodies[b]
+                               + " section or the plain ring's Inner "
+                                 "diameter, Outer diameter and Length, not "
+                                 "both");
+        }
+      if (!any)
+        return;
+      std::vector<std::string> entries, texts;
+      for (unsigned int b = 0; b < p.bodies.size(); ++b)
+        if (!p.section_text[b].empty())
+          {
+            entries.push_back("Geometry/" + p.bodies[b] + " section");
+            texts.push_back(p.section_text[b]);
+          }
+        else
+          {
+            // A ring's entries must be there and in range to draw it.
+            const std::string  path = "Geometry/" + p.bodies[b] + "/";
+            const RingDrawing &r    = p.rings[b];
+            for (const std::string entry :
+                 {"Inner diameter", "Outer diameter", "Length"})
+              if (missing.count("Geometry." + p.bodies[b] + "." + entry) > 0)
+                throw InputError("parameter file does not give " + path + entry
+                                 + " (or Geometry/" + p.bodies[b]
+                                 + " section)");
+            require(r.length > 0., path + "Length", r.length, "above 0 mm");
+            require(r.outer_diameter > r.inner_diameter,
+                    path + "Outer diameter",
+                    r.outer_diameter,
+                    "above " + path
+                      + "Inner diameter = " + number(r.inner_diameter) + " mm");
+            std::ostringstream outline;
+            outline.precision(17);
+            const double z = 0.5 * r.length;
+            outline << -z << ", " << r.inner_diameter << "; " << z << ", "
+                    << r.inner_diameter << "; " << z << ", " << r.outer_diameter
+                    << "; " << -z << ", " << r.outer_diameter << "; " << -z
+                    << ", " << r.inner_diameter;
+            entries.push_back("Geometry/" + p.bodies[b]);
+            texts.push_back(outline.str());
+          }
+      p.sections = std::make_shared<const StackSections>(entries, texts);
+      for (unsigned int b = 0; b < p.bodies.size(); ++b)
+        if (!p.section_text[b].empty())
+          {
+            p.rings[b].inner_diameter
+              = p.sections->equivalent_inner_diameter(b);
+            p.rings[b].outer_diameter
+              = p.sections->equivalent_outer_diameter(b);
+            p.rings[b].length = p.sections->length(b);
+          }
+    }
+  } // namespace
+
+
+
+  namespace
+  {
+    /**
      * A stack of the bodies of @p filename (the first pass), its lists
      * sized for the second.
      */
@@ -985,6 +1126,7 @@ namespace coaxfit
         throw InputError("parameter file '" + filename
                          + "' gives no Assembly/Bodies");
       p.rings.resize(p.bodies.size());
+      p.section_text.resize(p.bodies.size());
       p.materials.resize(p.bodies.size());
       p.joint_entries.resize(p.n_joints());
       return p;
@@ -1076,6 +1218,7 @@ namespace coaxfit
     std::set<std::string> missing = entries_not_set(prm);
     for (unsigned int b = 0; b < p.bodies.size(); ++b)
       fill_material(p.materials[b], p.bodies[b], missing);
+    read_sections(p, missing);
     const bool default_given = missing.erase("Fit.Diametral interference") == 0;
     if (default_given && !p.default_fit.iso_fit.empty())
       throw InputError("parameter Fit/ISO fit = " + p.default_fit.iso_fit

@@ -434,6 +434,19 @@ namespace coaxfit
     StackState
     joint_alone(unsigned int k, unsigned int &staggered_steps) const;
 
+    /**
+     * How the sections are meshed (Mesh/Cell size, 0: the shortest
+     * joint's l_F / 100; Grading ratio; Global refinements).
+     */
+    SectionMeshSettings
+    section_settings() const;
+    /**
+     * The radius of body @p b's bore (@p bore) or outside (mm): a ring's
+     * diameters, a section's smallest and largest radius.
+     */
+    double
+    surface_radius(unsigned int b, bool bore) const;
+
     /** The radius and nodal u_r along the surface @p name. */
     SurfaceFigures
     surface(const std::string &name) const;

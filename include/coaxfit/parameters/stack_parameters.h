@@ -3,8 +3,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <coaxfit/fe/stack_sections.h>
 #include <coaxfit/parameters/parameters.h>
 
+#include <memory>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -137,8 +139,19 @@ namespace coaxfit
   {
     /** `Assembly/Bodies`, inside out. */
     std::vector<std::string> bodies;
-    /** `Geometry/<body>` of each body. */
+    /**
+     * `Geometry/<body>` of each body; for a body drawn as a section the
+     * plain ring DIN 7190's estimate puts in its place (derived:
+     * StackSections::equivalent_inner_diameter()).
+     */
     std::vector<RingDrawing> rings;
+    /** `Geometry/<body> section` of each body; empty: a plain ring. */
+    std::vector<std::string> section_text;
+    /**
+     * The sections of a stack in which any body is drawn as a section
+     * (derived; its rings as their rectangles); null: all plain rings.
+     */
+    std::shared_ptr<const StackSections> sections;
     /** `Material/<body>` of each body. */
     std::vector<Material> materials;
     /** The fit given directly in `Fit`. */
@@ -210,7 +223,8 @@ namespace coaxfit
     double
     joint_diameter(unsigned int k) const
     {
-      return rings[k].outer_diameter;
+      return sections ? 2. * sections->joint_radius(k) :
+                        rings[k].outer_diameter;
     }
 
     /**

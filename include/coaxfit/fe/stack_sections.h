@@ -1,0 +1,139 @@
+#ifndef coaxfit_stack_sections_h
+#define coaxfit_stack_sections_h
+
+#include <deal.II/grid/tria.h>
+
+#include <coaxfit/fe/section_mesh.h>
+#include <coaxfit/fe/section_outline.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coaxfit
+{
+  using namespace dealii;
+
+  /**
+   * The sections of a stack of bodies some of which are drawn as sections
+   * (`Geometry/<body> section`), the others plain rings given as their
+   * rectangles: every outline checked, where each body meets the next one
+   * out (its joint), the plane about which the whole stack is symmetric,
+   * and the half sections the model meshes.
+   *
+   * This version models stacks whose every joint is one cylinder and
+   * whose sections are all symmetric about one plane across the axis that
+   * passes through the middle of every joint (a gear wheel with a web
+   * between its boss and its rim seat, a flanged sleeve, rings of
+   * different lengths centred on one plane): the half z >= z_m of each
+   * section, shifted so that the plane is z = 0 of the model (u_z = 0
+   * there). Anything else is refused with one line naming the entries.
+   *
+   * The two bodies of a joint are meshed by gmsh with the same vertices
+   * on it (graded towards its end from Mesh/Cell size), so that their
+   * joint nodes coincide: the stack's coupling takes the points of a
+   * joint as shared, as it does for rings.
+   */
+  class StackSections
+  {
+  public:
+    /**
+     * Parse, check and place the outlines @p texts (one per body, inside
+     * out) of the entries @p entries (`Geometry/Sleeve section`, or
+     * `Geometry/Sleeve` for a ring drawn as its rectangle).
+     * @throws InputError naming the entries at fault.
+     */
+    StackSections(const std::vector<std::string> &entries,
+                  const std::vector<std::string> &texts);
+
+    unsigned int
+    n_bodies() const
+    {
+      return drawn.size();
+    }
+
+    /** The outline of body @p b as drawn (the interference not drawn). */
+    const SectionOutline &
+    drawing(unsigned int b) const
+    {
+      return *drawn[b];
+    }
+
+    /** The modelled half of body @p b's section (model z >= 0). */
+    const SectionOutline &
+    modelled(unsigned int b) const
+    {
+      return *half[b];
+    }
+
+    /** Drawing z of the model's z = 0, the plane of symmetry (mm). */
+    double
+    drawing_offset() const
+    {
+      return z_m;
+    }
+
+    /** The radius of joint @p k between bodies k and k + 1 (mm). */
+    double
+    joint_radius(unsigned int k) const
+    {
+      return radius[k];
+    }
+
+    /** The half length of joint @p k (mm): it spans model z 0 to this. */
+    double
+    joint_half_length(unsigned int k) const
+    {
+      return half_length[k];
+    }
+
+    /**
+     * The smallest radius of body @p b's section (its bore; 0 if it
+     * reaches the axis) and its largest (mm).
+     */
+    double
+    bore_radius(unsigned int b) const;
+    double
+    outer_radius(unsigned int b) const;
+
+    /**
+     * The plain ring DIN 7190's estimate puts in place of body @p b
+     * (diameters in mm): from the joint inside it (the innermost body:
+     * its bore) to the joint outside it (the outermost: its outer
+     * diameter averaged over its joint, mean_outer_diameter()).
+     */
+    double
+    equivalent_inner_diameter(unsigned int b) const;
+    double
+    equivalent_outer_diameter(unsigned int b) const;
+
+    /** The axial extent of body @p b's section (mm). */
+    double
+    length(unsigned int b) const;
+
+    /**
+     * Mesh every modelled section: its joints tagged (the inner one
+     * BoundaryId::inner_joint of a body in the middle, else
+     * BoundaryId::joint) with the same vertices in both bodies of each
+     * joint, the plane z = 0 BoundaryId::symmetry, r = 0 BoundaryId::axis,
+     * the innermost body's bore BoundaryId::bore and the outermost body's
+     * largest diameter BoundaryId::outer (for Operation's pressures),
+     * every other face SectionId::free; refined @p
+     * settings.global_refinements times.
+     */
+    std::vector<std::shared_ptr<Triangulation<2>>>
+    make_meshes(const SectionMeshSettings &settings) const;
+
+  private:
+    std::vector<std::unique_ptr<SectionOutline>> drawn, half;
+    std::vector<double>                          radius, half_length;
+    std::vector<double>                          outer_mean; ///< per joint
+    double                                       z_m = 0.;
+
+    /** The vertices of joint @p k between its ends, ascending. */
+    std::vector<Point<2>>
+    joint_vertices(unsigned int k, const SectionMeshSettings &settings) const;
+  };
+} // namespace coaxfit
+
+#endif

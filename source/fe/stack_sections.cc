@@ -1,0 +1,254 @@
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/fe/mesh.h>
+#include <coaxfit/fe/section_joint.h>
+#include <coaxfit/fe/section_placement.h>
+#include <coaxfit/fe/section_symmetry.h>
+#include <coaxfit/fe/stack_sections.h>
+#include <coaxfit/parameters/parameter_checks.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace coaxfit
+{
+  StackSections::StackSections(const std::vector<std::string> &entries,
+                               const std::vector<std::string> &texts)
+  {
+    const unsigned int N = texts.size();
+    for (unsigned int b = 0; b < N; ++b)
+      drawn.push_back(std::make_unique<SectionOutline>(
+        SectionOutline::parse(texts[b], entries[b])));
+    double extent = 0.;
+    for (const auto &outline : drawn)
+      extent = std::max(extent, outline->extent());
+    const double tol = 1e-6 * extent;
+
+    // Each body meets the next one out on one cylinder.
+    std::vector<double> z_lo(N - 1), z_hi(N - 1);
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      {
+        const std::string both
+          = "parameters " + entries[k] + " and " + entries[k + 1] + ": ";
+        std::vector<JointPiece> pieces
+          = merged(find_joint(*drawn[k], *drawn[k + 1]), tol);
+        // Sections that meet within the drawing tolerance: corners on the
+        // joint's cylinder moved onto it exactly, so that both meshes have
+        // it.
+        if (pieces.size() == 1
+            && std::abs(pieces[0].start[0] - pieces[0].end[0]) <= tol)
+          {
+            const Point<2> a = pieces[0].start,
+                           c(pieces[0].start[0], pieces[0].end[1]);
+            for (const unsigned int b : {k, k + 1})
+              drawn[b] = std::make_unique<SectionOutline>(
+                snapped(*drawn[b], a, c, tol));
+            pieces = merged(find_joint(*drawn[k], *drawn[k + 1]), tol);
+          }
+        if (pieces.size() != 1)
+          throw InputError(
+            both + "the sections meet in " + std::to_string(pieces.size())
+            + " pieces; a joint of a stack is one cylinder in this version "
+              "(a face across the axis, a relief groove or a second seat "
+              "is not modelled in a stack yet)");
+        const JointPiece &joint = pieces.front();
+        if (std::abs(joint.start[0] - joint.end[0]) > tol)
+          throw InputError(
+            both + "the joint from z = " + number(joint.start[1], 6)
+            + ", D = " + number(2. * joint.start[0], 6) + " to z = "
+            + number(joint.end[1], 6) + ", D = " + number(2. * joint.end[0], 6)
+            + " is not a cylinder; a joint of a stack is a cylinder in this "
+              "version (taper fits are modelled for two bodies)");
+        if (joint.normal[0] < 0.)
+          throw InputError(both
+                           + "the first section lies outside the second "
+                             "at their joint; Assembly/Bodies lists "
+                             "the bodies inside out");
+        radius.push_back(joint.start[0]);
+        z_lo[k] = std::min(joint.start[1], joint.end[1]);
+        z_hi[k] = std::max(joint.start[1], joint.end[1]);
+        half_length.push_back(0.5 * (z_hi[k] - z_lo[k]));
+        outer_mean.push_back(
+          mean_outer_diameter(*drawn[k + 1], z_lo[k], z_hi[k]));
+      }
+
+    // One plane of symmetry through every joint's middle: the half model.
+    std::vector<const SectionOutline *> all;
+    for (const auto &outline : drawn)
+      all.push_back(outline.get());
+    const std::optional<double> plane = mirror_plane(all);
+    std::string                 why;
+    if (!plane)
+      why = "the sections are not symmetric about one plane across the axis";
+    else
+      for (unsigned int k = 0; k + 1 < N && why.empty(); ++k)
+        if (std::abs(*plane - 0.5 * (z_lo[k] + z_hi[k])) > tol)
+          why = "the joint of " + entries[k] + " and " + entries[k + 1]
+                + " (z = " + number(z_lo[k], 6) + " to " + number(z_hi[k], 6)
+                + ") is not centred on the plane of symmetry z = "
+                + number(*plane, 6);
+    for (unsigned int b = 0; b < N && why.empty(); ++b)
+      {
+        std::optional<SectionOutline> part = half_outline(*drawn[b], *plane);
+        if (!part)
+          why = "the half of " + entries[b]
+                + " beside the plane of symmetry is not one region (or a "
+                  "fillet touches the plane)";
+        else
+          half.push_back(
+            std::make_unique<SectionOutline>(shifted(*part, -*plane)));
+      }
+    if (!why.empty())
+      throw InputError("parameters " + entries.front() + " to " + entries.back()
+                       + ": " + why
+                       + "; a stack with sections is modelled as the half "
+                         "of a stack symmetric about one plane through the "
+                         "middle of every joint in this version");
+    z_m = *plane;
+  }
+
+
+
+  double
+  StackSections::bore_radius(const unsigned int b) const
+  {
+    double r = half[b]->corners().front().diameter;
+    for (const OutlineCorner &c : half[b]->corners())
+      r = std::min(r, c.diameter);
+    return 0.5 * r;
+  }
+
+
+
+  double
+  StackSections::outer_radius(const unsigned int b) const
+  {
+    double r = 0.;
+    for (const OutlineCorner &c : half[b]->corners())
+      r = std::max(r, c.diameter);
+    return 0.5 * r;
+  }
+
+
+
+  double
+  StackSections::equivalent_inner_diameter(const unsigned int b) const
+  {
+    return b == 0 ? 2. * bore_radius(0) : 2. * radius[b - 1];
+  }
+
+
+
+  double
+  StackSections::equivalent_outer_diameter(const unsigned int b) const
+  {
+    return b + 1 < n_bodies() ? 2. * radius[b] : outer_mean.back();
+  }
+
+
+
+  double
+  StackSections::length(const unsigned int b) const
+  {
+    const auto [lo, hi] = axial_range(*drawn[b]);
+    return hi - lo;
+  }
+
+
+
+  std::vector<Point<2>>
+  StackSections::joint_vertices(const unsigned int         k,
+                                const SectionMeshSettings &settings) const
+  {
+    const double h_max = settings.max_cell_size > 0. ? settings.max_cell_size :
+                                                       8. * settings.cell_size;
+    const std::vector<double> from_middle = joint_offsets(
+      half_length[k], settings.cell_size, settings.grading_ratio, h_max);
+    std::vector<double> z(from_middle.rbegin(), from_middle.rend());
+    const double        R = radius[k];
+    z                     = with_corners(
+      z,
+      {half[k].get(), half[k + 1].get()},
+      [R](const double) { return R; },
+      0.,
+      half_length[k]);
+    std::vector<Point<2>> vertices;
+    for (const double zi : z)
+      vertices.emplace_back(R, zi);
+    return vertices;
+  }
+
+
+
+  std::vector<std::shared_ptr<Triangulation<2>>>
+  StackSections::make_meshes(const SectionMeshSettings &settings) const
+  {
+    const unsigned int         N = n_bodies();
+    std::vector<TaggedSegment> joints;
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      {
+        TaggedSegment joint{Point<2>(radius[k], 0.),
+                            Point<2>(radius[k], half_length[k]),
+                            BoundaryId::joint};
+        joint.vertices = joint_vertices(k, settings);
+        // The middle of a half model's joint is no end.
+        joint.refine_ends = false;
+        joints.push_back(joint);
+      }
+    std::vector<std::shared_ptr<Triangulation<2>>> meshes(N);
+    // Every body's cells split, or none: the joints' vertices must match.
+    const auto mesh_all = [&](const bool full_quad) {
+      unsigned int split = 0;
+      for (unsigned int b = 0; b < N; ++b)
+        {
+          SectionBoundary boundary;
+          if (b > 0)
+            {
+              boundary.segments.push_back(joints[b - 1]);
+              if (b + 1 < N)
+                boundary.segments.back().boundary_id = BoundaryId::inner_joint;
+            }
+          if (b + 1 < N)
+            boundary.segments.push_back(joints[b]);
+          const SectionOutline &outline = *half[b];
+          const double          tol     = 1e-9 * outline.extent();
+          for (const OutlineEdge &edge : outline.edges())
+            if (!edge.is_arc() && std::abs(edge.start[1]) <= tol
+                && std::abs(edge.end[1]) <= tol)
+              {
+                TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
+                plane.refine_ends = false;
+                boundary.segments.push_back(plane);
+              }
+          SectionMeshSettings local = settings;
+          local.refinement_points.clear();
+          for (const unsigned int k : {b - 1, b})
+            if (k < joints.size()) // b - 1 wraps round for b = 0
+              local.refinement_points.push_back(joints[k].end);
+          local.full_quad = full_quad;
+          meshes[b]       = std::make_shared<Triangulation<2>>();
+          split += make_section_mesh(*meshes[b], outline, boundary, local);
+        }
+      return split == 0 || split == N;
+    };
+    if (!mesh_all(settings.full_quad))
+      mesh_all(true);
+
+    // The surfaces Operation's pressures act on: the innermost body's
+    // bore, the outermost body's largest diameter.
+    for (const unsigned int b : {0u, N - 1})
+      {
+        const double r   = b == 0 ? bore_radius(0) : outer_radius(N - 1);
+        const double tol = 1e-9 * half[b]->extent();
+        if (r <= 0.)
+          continue;
+        for (const auto &cell : meshes[b]->active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == SectionId::free
+                && std::abs(face->vertex(0)[0] - r) <= tol
+                && std::abs(face->vertex(1)[0] - r) <= tol)
+              face->set_boundary_id(b == 0 ? BoundaryId::bore :
+                                             BoundaryId::outer);
+      }
+    return meshes;
+  }
+} // namespace coaxfit

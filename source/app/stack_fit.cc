@@ -413,7 +413,7 @@ namespace coaxfit
   double
   StackFit::surface_radius(const unsigned int b, const bool bore) const
   {
-    if (parameters.section_text[b].empty())
+    if (!parameters.drawn_as_section(b))
       return (bore ? parameters.rings[b].inner_diameter :
                      parameters.rings[b].outer_diameter)
              / 2.;

@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 
 namespace coaxfit
@@ -274,6 +275,19 @@ namespace coaxfit
     std::unique_ptr<Accelerator> accelerator = make_accelerator(parameters);
     if (progress)
       *progress << "  step   displacement   traction   contact points\n";
+    // The residual at which the contact points are updated: loose at
+    // first, tightened a hundredfold whenever the points come back to a set
+    // they had (a point at the edge of contact with next to no force and
+    // no gap flips on an unsettled iterate), down to the tolerance.
+    double                      settle = std::max(parameters.tolerance, 1e-4);
+    std::set<std::vector<bool>> sets_seen;
+    const auto                  all_points = [this]() {
+      std::vector<bool> all;
+      for (const auto &c : current.contact)
+        all.insert(all.end(), c.begin(), c.end());
+      return all;
+    };
+    sets_seen.insert(all_points());
     for (steps = 1; steps <= parameters.max_steps; ++steps)
       {
         step_gap = step_set_gap = step_traction = 0.;
@@ -322,8 +336,7 @@ namespace coaxfit
         // solves): a point whose force pulls separates, a separated point
         // that penetrates closes; the history then restarts.
         const double set_residual = std::max(step_set_gap, traction);
-        if (parameters.unilateral
-            && set_residual < std::max(parameters.tolerance, 1e-4))
+        if (parameters.unilateral && set_residual < settle)
           {
             for (unsigned int k = 0; k < joints.size(); ++k)
               for (unsigned int i = 0; i < next[k].size(); ++i)
@@ -340,6 +353,8 @@ namespace coaxfit
                       changed               = true;
                     }
                 }
+            if (changed && !sets_seen.insert(all_points()).second)
+              settle = std::max(parameters.tolerance, 1e-2 * settle);
           }
         unsigned int n_contact = 0, n_points = 0;
         for (const auto &c : current.contact)

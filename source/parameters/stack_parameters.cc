@@ -476,6 +476,7 @@ namespace coaxfit
     prm.leave_subsection();
 
     prm.enter_subsection("Geometry");
+    section_text.resize(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         prm.enter_subsection(bodies[b]);
@@ -752,7 +753,7 @@ namespace coaxfit
       {
         std::string        path = "Geometry/" + bodies[b] + "/";
         const RingDrawing &r    = rings[b];
-        if (!section_text[b].empty())
+        if (drawn_as_section(b))
           path = "Geometry/" + bodies[b] + " section: its equivalent ring's ";
         require(r.length > 0., path + "Length", r.length, "above 0 mm");
         require(r.outer_diameter > r.inner_diameter,
@@ -852,7 +853,7 @@ namespace coaxfit
       throw InputError("parameter Operation/" + bodies[0]
                        + " bore pressure = " + number(operation.bore_pressure)
                        + ": the body " + bodies[0] + " is solid ("
-                       + (section_text[0].empty() ?
+                       + (!drawn_as_section(0) ?
                             "Geometry/" + bodies[0] + "/Inner diameter = 0" :
                             "its section reaches the axis")
                        + "); allowed is 0");

@@ -212,6 +212,13 @@ namespace coaxfit
       return bodies.size() - 1;
     }
 
+    /** Whether body @p b is drawn as a section (`Geometry/<body> section`). */
+    bool
+    drawn_as_section(const unsigned int b) const
+    {
+      return b < section_text.size() && !section_text[b].empty();
+    }
+
     /** The name of joint @p k: `<inner>-<outer>`. */
     std::string
     joint_name(unsigned int k) const

@@ -1,0 +1,298 @@
+// Stacks with bodies drawn as sections (Geometry/<body> section), run as a
+// user runs them:
+//
+// 1. Exact: sections that are rectangles of equal length (a ring drawn as
+//    an outline, meshed by gmsh instead of the ring mesher) with
+//    frictionless joints are in a plane-stress Lame state, so every
+//    joint's pressure (at the mid-plane and its mean) is the compound
+//    cylinders' (closed form, computed here) to 1e-5 at Mesh/Global
+//    refinements = 1: three bodies with the sleeve a section, five with a
+//    hollow core and two more bodies as sections, mixed with rings.
+// 2. A gear wheel with a web (a section with fillets) between a shaft and
+//    a rim: the staggered process in both orderings against the
+//    monolithic solution of the same discrete problem (1e-8 of the
+//    largest pressure); the web carries the wheel's seat on the shaft, so
+//    the pressure at the mid-plane exceeds the mean and the plane-stress
+//    estimate (printed to 1e-4: the values of a run checked against an
+//    independent axisymmetric CalculiX model, doc/several_bodies.md).
+// 3. The same gear in operation (speed, a hot rim, an outer pressure):
+//    the rim seat's last point is at the edge of contact (next to no force
+//    and no gap); the staggered process converges (it once flipped that
+//    point forever) and agrees with the monolithic solution.
+// 4. Bad input: both a section and a ring's entries, sections that are not
+//    symmetric about one plane, a cone, sections that do not meet or
+//    overlap, a joint of two pieces, Mesh/Cell size without sections or
+//    out of range, a grading too steep: exit 1, one line naming the
+//    entry, nothing written.
+
+#include <coaxfit/design/compound_cylinders.h>
+
+#include "run_executable.h"
+#include "run_summary.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+using namespace coaxfit_test;
+
+namespace
+{
+  /** One body of a test stack: a ring, drawn as a section if @p section. */
+  struct Body
+  {
+    std::string name;
+    double      d_in, d_out, E, nu;
+    bool        section;
+  };
+
+  const double length = 40.;
+
+  /** A parameter file of @p bodies with interferences @p U. */
+  std::string
+  stack_prm(const std::vector<Body> &bodies, const std::vector<double> &U)
+  {
+    std::ostringstream s;
+    s.precision(12);
+    s << "subsection Assembly\n  set Bodies = ";
+    for (const Body &b : bodies)
+      s << (&b == &bodies[0] ? "" : ", ") << b.name;
+    s << "\nend\nsubsection Geometry\n";
+    const double z = length / 2.;
+    for (const Body &b : bodies)
+      if (b.section)
+        s << "  set " << b.name << " section = " << -z << ", " << b.d_in << "; "
+          << z << ", " << b.d_in << "; " << z << ", " << b.d_out << "; " << -z
+          << ", " << b.d_out << "; " << -z << ", " << b.d_in << "\n";
+      else
+        s << "  subsection " << b.name
+          << "\n    set Inner diameter = " << b.d_in
+          << "\n    set Outer diameter = " << b.d_out
+          << "\n    set Length = " << length << "\n  end\n";
+    s << "end\nsubsection Material\n";
+    for (const Body &b : bodies)
+      s << "  subsection " << b.name << "\n    set E = " << b.E
+        << "\n    set nu = " << b.nu << "\n  end\n";
+    s << "end\nsubsection Fit\n";
+    for (unsigned int k = 0; k < U.size(); ++k)
+      s << "  subsection " << bodies[k].name << '-' << bodies[k + 1].name
+        << "\n    set Diametral interference = " << U[k] << "\n  end\n";
+    s << "end\nsubsection Mesh\n  set Global refinements = 1\nend\n"
+         "subsection Coupling\n  set Tolerance = 1e-12\nend\n";
+    return s.str();
+  }
+
+  /** Part 1: @p bodies against the compound cylinders. */
+  void
+  check_lame(const std::string         &name,
+             const std::vector<Body>   &bodies,
+             const std::vector<double> &U)
+  {
+    std::ofstream(name + ".prm") << stack_prm(bodies, U);
+    std::filesystem::remove_all(name);
+    const RunResult      r = run_coaxfit(name, quiet + name + ".prm");
+    const nlohmann::json s = read_summary(name);
+    std::vector<coaxfit::CompoundCylinders::Ring> rings;
+    for (const Body &b : bodies)
+      rings.push_back({b.d_in, b.d_out, b.E, b.nu});
+    const coaxfit::CompoundCylinders exact(rings, U, 0., 0.);
+    std::cout << name << ": exit " << r.exit_code << ", converged "
+              << s["converged"] << '\n';
+    for (unsigned int k = 0; k < U.size(); ++k)
+      {
+        const nlohmann::json &j = s["joints"][k];
+        const double          p = exact.pressure(k);
+        std::cout << "  " << j["name"].get<std::string>() << ": "
+                  << std::setprecision(6) << p << " MPa exact: at the "
+                  << "mid-plane "
+                  << agreement(j["pressure"]["at_mid_plane"], p, 1e-5)
+                  << ", mean " << agreement(j["pressure"]["mean"], p, 1e-5)
+                  << '\n';
+      }
+  }
+
+  const std::string gear_body
+    = "-25, 50; 25, 50; 25, 80; 8, 80, 4; 8, 140, 4; 25, 140; 25, 160; "
+      "-25, 160; -25, 140; -8, 140, 4; -8, 80, 4; -25, 80; -25, 50";
+
+  /** The gear wheel with a web between a shaft and a rim. */
+  std::string
+  gear_prm()
+  {
+    return "subsection Assembly\n  set Bodies = Shaft, Wheel, Rim\n"
+           "  set Report surfaces = Rim outer, Wheel bore\nend\n"
+           "subsection Geometry\n"
+           "  subsection Shaft\n    set Inner diameter = 0\n"
+           "    set Outer diameter = 50\n    set Length = 80\n  end\n"
+           "  set Wheel section = "
+           + gear_body
+           + "\n"
+             "  subsection Rim\n    set Inner diameter = 160\n"
+             "    set Outer diameter = 200\n    set Length = 50\n  end\n"
+             "end\n"
+             "subsection Material\n"
+             "  subsection Shaft\n    set E = 210000\n    set nu = 0.3\n"
+             "    set Density = 7850\n    set Thermal expansion = 1.1e-5\n"
+             "  end\n"
+             "  subsection Wheel\n    set E = 169000\n    set nu = 0.275\n"
+             "    set Density = 7100\n    set Thermal expansion = 1.25e-5\n"
+             "  end\n"
+             "  subsection Rim\n    set E = 210000\n    set nu = 0.3\n"
+             "    set Density = 7850\n    set Thermal expansion = 1.1e-5\n"
+             "  end\n"
+             "end\n"
+             "subsection Fit\n"
+             "  subsection Shaft-Wheel\n"
+             "    set Diametral interference = 0.05\n  end\n"
+             "  subsection Wheel-Rim\n"
+             "    set Diametral interference = 0.16\n  end\n"
+             "end\n"
+             "subsection Mesh\n  set Global refinements = 1\nend\n"
+             "subsection Coupling\n  set Tolerance = 1e-10\nend\n";
+  }
+
+  /** The pressures of every joint of a run (at the mid-plane, mean). */
+  std::vector<double>
+  pressures(const nlohmann::json &s)
+  {
+    std::vector<double> p;
+    for (const auto &j : s["joints"])
+      {
+        p.push_back(j["pressure"]["at_mid_plane"]);
+        p.push_back(j["pressure"]["mean"]);
+      }
+    return p;
+  }
+
+  /** The largest difference of @p a and @p b over the largest of @p b. */
+  double
+  difference(const std::vector<double> &a, const std::vector<double> &b)
+  {
+    double d = 0., scale = 0.;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        d     = std::max(d, std::abs(a[i] - b[i]));
+        scale = std::max(scale, std::abs(b[i]));
+      }
+    return d / scale;
+  }
+
+  /** Parts 2 and 3: the gear with @p loads (--set options). */
+  void
+  check_gear(const std::string &name, const std::string &loads)
+  {
+    std::ofstream("gear.prm") << gear_prm();
+    std::vector<std::vector<double>> runs;
+    for (const std::string method : {"--set Solver/Method=monolithic",
+                                     "--set Coupling/Ordering=gauss-seidel",
+                                     "--set Coupling/Ordering=jacobi"})
+      {
+        const std::string dir = name + "_" + std::to_string(runs.size());
+        std::filesystem::remove_all(dir);
+        const RunResult r
+          = run_coaxfit(dir, quiet + method + loads + " gear.prm");
+        const nlohmann::json s = read_summary(dir);
+        std::cout << name << ", " << method.substr(6) << ": exit "
+                  << r.exit_code << ", converged " << s["converged"] << '\n';
+        runs.push_back(pressures(s));
+        if (runs.size() > 1)
+          {
+            const double d = difference(runs.back(), runs.front());
+            std::cout << "  against the monolithic solution: "
+                      << (d <= 1e-8 ? "agrees" : "DIFFERS") << " (1e-8)\n";
+            continue;
+          }
+        for (const auto &j : s["joints"])
+          std::cout << "  " << j["name"].get<std::string>() << ": p(0) "
+                    << std::setprecision(5)
+                    << j["pressure"]["at_mid_plane"].get<double>()
+                    << " MPa, mean " << j["pressure"]["mean"].get<double>()
+                    << " MPa, plane-stress estimate "
+                    << j["plane_stress_estimate"]["pressure"].get<double>()
+                    << " MPa, " << j["contact"]["separated_points"]
+                    << " points open\n";
+      }
+  }
+
+  /** Part 4: a bad input is refused in one line, nothing written. */
+  void
+  refuse(const std::string &what, const std::string &options)
+  {
+    std::filesystem::remove_all("refused");
+    const RunResult r = run_coaxfit("refused", quiet + options + " gear.prm");
+    std::cout << what << ": exit " << r.exit_code << ", "
+              << (std::filesystem::exists("refused") ? "written" :
+                                                       "nothing written")
+              << "\n  " << gist(r.message, 60) << " (" << r.lines << " line)"
+              << '\n';
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << "1. Rectangles as sections against the compound cylinders\n";
+  check_lame("three",
+             {{"Shaft", 0., 60., 210000., 0.3, false},
+              {"Sleeve", 60., 90., 110000., 0.34, true},
+              {"Hub", 90., 160., 70000., 0.33, false}},
+             {0.04, 0.06});
+  check_lame("five",
+             {{"Core", 20., 50., 210000., 0.3, true},
+              {"R1", 50., 70., 110000., 0.34, false},
+              {"R2", 70., 95., 70000., 0.33, true},
+              {"R3", 95., 120., 210000., 0.3, false},
+              {"R4", 120., 160., 169000., 0.275, true}},
+             {0.03, 0.02, 0.07, 0.05});
+
+  std::cout << "\n2. A gear wheel with a web between a shaft and a rim\n";
+  check_gear("gear", "");
+  std::cout << "\n3. The gear in operation: a point at the edge of contact\n";
+  check_gear("operation",
+             " --set Operation/Speed=6000 --set \"Operation/Rim "
+             "temperature=80\" --set \"Operation/Rim outer pressure=5\"");
+
+  std::cout << "\n4. Bad input\n";
+  refuse("a section and a ring's entries",
+         "--set \"Geometry/Wheel section=-25, 50; 25, 50; 25, 160; -25, "
+         "160; -25, 50\" --set Geometry/Wheel/Length=50");
+  refuse("not symmetric about one plane",
+         "--set \"Geometry/Wheel section=-30, 50; 20, 50; 20, 160; -30, "
+         "160; -30, 50\"");
+  refuse("sections that do not meet",
+         "--set \"Geometry/Wheel section=-25, 52; 25, 52; 25, 160; -25, "
+         "160; -25, 52\"");
+  refuse("sections that overlap",
+         "--set \"Geometry/Wheel section=-25, 48; 25, 48; 25, 160; -25, "
+         "160; -25, 48\"");
+  refuse("a joint of two pieces (a relief groove)",
+         "--set \"Geometry/Wheel section=-25, 50; -5, 50; -5, 52; 5, 52; 5, "
+         "50; 25, 50; 25, 160; -25, 160; -25, 50\"");
+  refuse("Mesh/Cell size out of range", "--set \"Mesh/Cell size=0.01\"");
+  refuse("Mesh/Grading ratio too steep", "--set \"Mesh/Grading ratio=4\"");
+  // A taper between two sections.
+  std::ofstream("cone.prm")
+    << stack_prm({{"A", 0., 60., 210000., 0.3, true},
+                  {"B", 60., 90., 110000., 0.34, true}},
+                 {0.04})
+    << "subsection Geometry\n  set A section = -20, 0; 20, 0; 20, 62; -20, "
+       "58; -20, 0\n  set B section = -20, 58; 20, 62; 20, 90; -20, 90; "
+       "-20, 58\nend\n";
+  std::filesystem::remove_all("refused");
+  const RunResult cone = run_coaxfit("refused", quiet + "cone.prm");
+  std::cout << "a cone: exit " << cone.exit_code << "\n  "
+            << gist(cone.message, 60) << " (" << cone.lines << " line)\n";
+  std::ofstream("rings.prm")
+    << stack_prm({{"A", 0., 60., 210000., 0.3, false},
+                  {"B", 60., 90., 110000., 0.34, false}},
+                 {0.04});
+  std::filesystem::remove_all("refused");
+  const RunResult r
+    = run_coaxfit("refused", quiet + "--set \"Mesh/Cell size=1\" rings.prm");
+  std::cout << "Mesh/Cell size without sections: exit " << r.exit_code << "\n  "
+            << gist(r.message, 60) << " (" << r.lines << " line)" << '\n';
+  return 0;
+}

@@ -770,6 +770,17 @@ namespace coaxfit
                 f.hoop_mid_plane = std::max(f.hoop_mid_plane, s.hoop());
               }
           }
+    // A section's largest stress may lie anywhere on its boundary (a
+    // fillet of its web).
+    if (parameters.drawn_as_section(b))
+      for (const StressState &s :
+           stresses_on_faces(*bodies[b],
+                             field,
+                             [](const DoFHandler<2>::active_cell_iterator &cell,
+                                const unsigned int                         f) {
+                               return cell->face(f)->at_boundary();
+                             }))
+        f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
     f.brittle          = parameters.materials[b].kind == MaterialKind::brittle;
     f.tensile_strength = parameters.materials[b].tensile_strength;
     f.fracture_safety

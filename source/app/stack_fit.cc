@@ -296,11 +296,12 @@ namespace coaxfit
       {
         const BodyDiscretization &in = *bodies[k], &out = *bodies[k + 1];
         StackJoint                joint;
-        joint.name           = parameters.joint_name(k);
-        joint.interference   = parameters.fits[k].diametral_interference / 2.;
-        const unsigned int n = out.n_inner_interface_points() > 0 ?
-                                 out.n_inner_interface_points() :
-                                 out.n_interface_points();
+        joint.name         = parameters.joint_name(k);
+        joint.interference = parameters.fits[k].diametral_interference / 2.;
+        joint.whole = parameters.sections && !parameters.sections->half_model();
+        const unsigned int n      = out.n_inner_interface_points() > 0 ?
+                                      out.n_inner_interface_points() :
+                                      out.n_interface_points();
         const unsigned int at_in  = in.n_inner_interface_points();
         const unsigned int at_out = 0;
         if (in.n_interface_points() - at_in != n)
@@ -526,8 +527,8 @@ namespace coaxfit
     };
     f.press_p_mean = p_mean(part_assembly(first, last, false));
     // F = nu_e N, the normal force N = p_mean pi D l over the joint's
-    // length l (twice the half model's).
-    const double area = M_PI * f.diameter * 2. * joint.z.back();
+    // length l.
+    const double area = M_PI * f.diameter * joint.length();
     f.press_in_force  = f.press_in_friction_coefficient * f.press_p_mean * area;
     f.press_in_force_largest = f.press_in_friction_coefficient
                                * p_mean(part_assembly(first, last, true))
@@ -697,7 +698,7 @@ namespace coaxfit
     f.smoothing_loss         = parameters.fits[k].smoothing_loss;
     f.effective_interference = parameters.fits[k].diametral_interference;
     const Vector<double> p   = state.pressure(stack_joints, k);
-    f.p_mid                  = p[0];
+    f.p_mid                  = p[joint.middle()];
     f.p_min                  = *std::min_element(p.begin(), p.end());
     f.p_max                  = *std::max_element(p.begin(), p.end());
     f.p_mean = state.force[k].mean_value() * state.force[k].size()
@@ -706,13 +707,13 @@ namespace coaxfit
       = std::count(state.contact[k].begin(), state.contact[k].end(), false);
     f.closed = f.separated_points == 0;
     // The length in contact: each stretch between neighbouring points
-    // counts whole if both touch, half if one does (whole model: twice
-    // the half model's).
+    // counts whole if both touch, half if one does (the whole joint's:
+    // twice the half model's).
     double in_contact = 0.;
     for (unsigned int i = 0; i + 1 < joint.n_points(); ++i)
       in_contact += 0.5 * (state.contact[k][i] + state.contact[k][i + 1])
                     * (joint.z[i + 1] - joint.z[i]);
-    f.contact_length = 2. * in_contact;
+    f.contact_length = (joint.whole ? 1. : 2.) * in_contact;
     // The gap of each point from the bodies' own displacements (the loads'
     // answers included).
     const Vector<double> u_in
@@ -735,7 +736,7 @@ namespace coaxfit
     f.friction_coefficient = parameters.fits[k].friction_coefficient;
     // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l, in N m.
     f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI * f.diameter
-                        * f.diameter * 2. * joint.z.back() / 2. / 1000.;
+                        * f.diameter * joint.length() / 2. / 1000.;
     f.slip_safety = parameters.required_torque > 0. ?
                       f.torque_capacity / parameters.required_torque :
                       0.;
@@ -758,19 +759,31 @@ namespace coaxfit
                               parameters.rings[b].outer_diameter / 2.};
     if (parameters.sections)
       radii.insert({surface_radius(b, true), surface_radius(b, false)});
+    // The mid-plane: z = 0 of a half model; of a whole one, the plane
+    // through the middle of the body's bore joint (the innermost body's:
+    // its outer joint), on each radius its nearest nodes.
+    const StackJoint &own = stack_joints[b > 0 ? b - 1 : 0];
+    const double z_mid = own.whole ? 0.5 * (own.z.front() + own.z.back()) : 0.;
     for (const double r : radii)
       if (r > 0.)
-        for (const StressState &s : stresses_along_radius(*bodies[b], field, r))
-          {
-            f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
-            if (s.z == 0.)
-              {
-                f.von_mises_mid_plane
-                  = std::max(f.von_mises_mid_plane, s.von_mises());
-                f.hoop_mid_plane = std::max(f.hoop_mid_plane, s.hoop());
-              }
-          }
-    // A section's largest stress may lie anywhere on its boundary (a
+        {
+          const std::vector<StressState> states
+            = stresses_along_radius(*bodies[b], field, r);
+          double nearest = std::numeric_limits<double>::infinity();
+          for (const StressState &s : states)
+            nearest = std::min(nearest, std::abs(s.z - z_mid));
+          for (const StressState &s : states)
+            {
+              f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
+              if (own.whole ? std::abs(s.z - z_mid) <= nearest : s.z == 0.)
+                {
+                  f.von_mises_mid_plane
+                    = std::max(f.von_mises_mid_plane, s.von_mises());
+                  f.hoop_mid_plane = std::max(f.hoop_mid_plane, s.hoop());
+                }
+            }
+        }
+    // A section's largest stress may lie anywhere on its surfaces (a
     // fillet of its web).
     if (parameters.drawn_as_section(b))
       for (const StressState &s :
@@ -778,7 +791,13 @@ namespace coaxfit
                              field,
                              [](const DoFHandler<2>::active_cell_iterator &cell,
                                 const unsigned int                         f) {
-                               return cell->face(f)->at_boundary();
+                               // Its surfaces: not the axis, not the
+                               // plane of symmetry.
+                               const auto face = cell->face(f);
+                               return face->at_boundary()
+                                      && face->boundary_id() != BoundaryId::axis
+                                      && face->boundary_id()
+                                           != BoundaryId::symmetry;
                              }))
         f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
     f.brittle          = parameters.materials[b].kind == MaterialKind::brittle;
@@ -1076,7 +1095,7 @@ namespace coaxfit
         JointFigures      f     = joint_state(k, solution, fields);
         alone.push_back(joint_alone(k, f.alone_steps));
         const Vector<double> pa = alone.back().pressure({joint}, 0);
-        f.alone_p_mid           = pa[0];
+        f.alone_p_mid           = pa[joint.middle()];
         f.alone_p_mean          = alone.back().force[0].mean_value() * pa.size()
                          / (joint.weights.mean_value() * joint.weights.size());
         f.lame_p       = lame.pressure(k);
@@ -1179,6 +1198,15 @@ namespace coaxfit
                      "jacobi" :
                      "gauss-seidel"))
         << '\n';
+    if (parameters.sections)
+      out << "  sections meshed by gmsh, "
+          << (parameters.sections->half_model() ?
+                "the half beside the plane of symmetry z = "
+                  + number(parameters.sections->drawing_offset(), 6)
+                  + " of the drawing" :
+                "whole (no plane of symmetry through every joint's "
+                "middle; z of the drawing)")
+          << '\n';
     for (unsigned int k = 0; k < parameters.n_joints(); ++k)
       out << "  " << parameters.joint_name(k) << ": D "
           << parameters.joint_diameter(k) << " mm, U "

@@ -330,8 +330,24 @@ namespace coaxfit
     for (unsigned int b = 0; b < N; ++b)
       dofs[Body::key_of(parameters.bodies[b])]
         = bodies[b]->get_dof_handler().n_dofs();
-    j["mesh"]   = {{"n_dofs", dofs}, {"degree", parameters.mesh.degree}};
-    j["timing"] = timing;
+    j["mesh"] = {{"n_dofs", dofs}, {"degree", parameters.mesh.degree}};
+    // Sections: the half model (z from the plane of symmetry) or whole,
+    // and what was drawn.
+    if (parameters.sections)
+      {
+        const std::string model
+          = parameters.sections->half_model() ? "half" : "whole";
+        j["mesh"]["model"]   = model;
+        nlohmann::json drawn = nlohmann::json::object();
+        for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
+          if (parameters.drawn_as_section(b))
+            drawn[parameters.bodies[b]] = parameters.section_text[b];
+        j["sections"] = {{"model", model},
+                         {"drawing_z_of_model_z0_mm",
+                          parameters.sections->drawing_offset()},
+                         {"drawn", drawn}};
+      }
+    j["timing"]            = timing;
     const std::string name = directory + "/summary.json";
     std::ofstream     out  = open_result_file(name);
     out << j.dump(2) << '\n';

@@ -123,7 +123,8 @@ namespace coaxfit
     for (unsigned int b = 0; b < p.bodies.size(); ++b)
       {
         const Material &m = p.materials[b];
-        md << "| " << p.bodies[b] << " | "
+        md << "| " << p.bodies[b] << (p.drawn_as_section(b) ? " (section)" : "")
+           << " | "
            << (p.rings[b].inner_diameter > 0. ?
                  design_figure(p.rings[b].inner_diameter) :
                  std::string("solid"))
@@ -134,6 +135,18 @@ namespace coaxfit
            << strength(m.tensile_strength) << " | " << to_string(m.kind)
            << " |\n";
       }
+    if (p.sections)
+      {
+        md << "\nA body drawn as a section (Geometry/<body> section) is "
+              "given as the plain ring of the plane-stress estimate: from "
+              "the joint inside it (the innermost body: its smallest "
+              "diameter) to the joint outside it (the outermost body: its "
+              "outer diameter averaged over its joint), its section's "
+              "axial extent. Its sections:\n\n";
+        for (unsigned int b = 0; b < p.bodies.size(); ++b)
+          if (p.drawn_as_section(b))
+            md << "- " << p.bodies[b] << ": `" << p.section_text[b] << "`\n";
+      }
 
     md << "\n## Joints" << (has_loads() ? " in operation" : "")
        << "\n\nPressures in MPa: in the stack (at the "
@@ -141,7 +154,12 @@ namespace coaxfit
           "alone (the joint's two bodies with the others removed, the same "
           "meshes) and the plane-stress compound-cylinder estimates "
           "(exact for bodies of equal length with free ends; under rotation an "
-          "estimate).\n\n"
+          "estimate"
+       << (p.sections ? "; a section is estimated as its equivalent ring "
+                        "(Bodies), which its web or flanges make stiffer or "
+                        "softer than it is" :
+                        "")
+       << ").\n\n"
           "U is the nominal diametral interference, U_w what is left "
           "after the smoothing loss 0.8 (Rz_inner + Rz_outer) of DIN "
           "7190-1, the interference the joint is solved with.\n\n"

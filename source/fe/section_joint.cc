@@ -65,6 +65,21 @@ namespace coaxfit
       return in;
     }
 
+    /**
+     * Whether the straight edges @p e and @p f lie on one line within
+     * @p tolerance (a cone drawn with rounded coordinates: collinear, not
+     * crossing).
+     */
+    bool
+    on_one_line(const OutlineEdge &e,
+                const OutlineEdge &f,
+                const double       tolerance)
+    {
+      const Tensor<1, 2> along = (e.end - e.start) / (e.end - e.start).norm();
+      return std::abs(cross(along, f.start - e.start)) <= tolerance
+             && std::abs(cross(along, f.end - e.start)) <= tolerance;
+    }
+
     [[noreturn]] void
     refuse(const SectionOutline &inner,
            const SectionOutline &outer,
@@ -77,8 +92,8 @@ namespace coaxfit
 
 
 
-  std::vector<JointPiece>
-  find_joint(const SectionOutline &inner, const SectionOutline &outer)
+  void
+  check_apart(const SectionOutline &inner, const SectionOutline &outer)
   {
     const double tolerance = 1e-6 * std::max(inner.extent(), outer.extent());
 
@@ -100,8 +115,27 @@ namespace coaxfit
               refuse(inner, outer, s.str());
             }
         }
+    // Sections aligned corner on edge overlap with no corner inside: the
+    // middle of an edge of one inside the other.
+    for (const auto &[a, b] :
+         {std::make_pair(&inner, &outer), std::make_pair(&outer, &inner)})
+      for (const OutlineEdge &e : a->edges())
+        {
+          double         distance = 0.;
+          const Point<2> p = e.is_arc() ? e.start : 0.5 * (e.start + e.end);
+          if (!e.is_arc() && inside(*b, p, distance) && distance > tolerance)
+            {
+              std::ostringstream s;
+              s << "the sections overlap: the point " << drawing_point(p)
+                << " of " << a->entry() << "'s outline lies " << distance
+                << " mm inside " << b->entry()
+                << "; allowed: sections that touch (drawn at the nominal "
+                   "size; the interference is given in Fit)";
+              refuse(inner, outer, s.str());
+            }
+        }
 
-    std::vector<JointPiece> pieces;
+    // Two straight edges that cross properly.
     for (const OutlineEdge &e : inner.edges())
       for (const OutlineEdge &f : outer.edges())
         {
@@ -109,35 +143,46 @@ namespace coaxfit
             continue;
           const Tensor<1, 2> de = e.end - e.start, df = f.end - f.start;
           const double       le = de.norm(), lf = df.norm();
-          // Edges on one line within the drawing tolerance (a cone drawn
-          // with rounded coordinates) are collinear, not crossing.
-          const Tensor<1, 2> along = de / le;
-          const bool         on_line
-            = std::abs(cross(along, f.start - e.start)) <= tolerance
-              && std::abs(cross(along, f.end - e.start)) <= tolerance;
-          // Two edges that cross properly: the sections overlap.
-          const double denominator = cross(de, df);
-          if (!on_line && std::abs(denominator) > 1e-12 * le * lf)
-            {
-              const double t = cross(f.start - e.start, df) / denominator;
-              const double u = cross(f.start - e.start, de) / denominator;
-              if (t * le > tolerance && (1. - t) * le > tolerance
-                  && u * lf > tolerance && (1. - u) * lf > tolerance)
-                refuse(inner,
-                       outer,
-                       "the sections overlap: their edges cross at "
-                         + drawing_point(e.start + t * de)
-                         + "; allowed: sections that touch (drawn at the "
-                           "nominal size; the interference is given in "
-                           "Fit)");
-              continue;
-            }
+          const double       denominator = cross(de, df);
+          if (on_one_line(e, f, tolerance)
+              || std::abs(denominator) <= 1e-12 * le * lf)
+            continue;
+          const double t = cross(f.start - e.start, df) / denominator;
+          const double u = cross(f.start - e.start, de) / denominator;
+          if (t * le > tolerance && (1. - t) * le > tolerance
+              && u * lf > tolerance && (1. - u) * lf > tolerance)
+            refuse(inner,
+                   outer,
+                   "the sections overlap: their edges cross at "
+                     + drawing_point(e.start + t * de)
+                     + "; allowed: sections that touch (drawn at the "
+                       "nominal size; the interference is given in Fit)");
+        }
+  }
+
+
+
+  std::vector<JointPiece>
+  find_joint(const SectionOutline &inner, const SectionOutline &outer)
+  {
+    const double tolerance = 1e-6 * std::max(inner.extent(), outer.extent());
+    check_apart(inner, outer);
+
+    std::vector<JointPiece> pieces;
+    for (const OutlineEdge &e : inner.edges())
+      for (const OutlineEdge &f : outer.edges())
+        {
+          if (e.is_arc() || f.is_arc())
+            continue;
+          // Crossing edges were refused by check_apart().
+          if (!on_one_line(e, f, tolerance))
+            continue;
+          const Tensor<1, 2> de = e.end - e.start, df = f.end - f.start;
+          const double       le = de.norm();
           // Collinear, opposite directions (both counter-clockwise: the
           // sections on opposite sides of the line).
           const Tensor<1, 2> unit = de / le;
-          const double off_start  = std::abs(cross(unit, f.start - e.start));
-          const double off_end    = std::abs(cross(unit, f.end - e.start));
-          if (off_start > tolerance || off_end > tolerance || de * df >= 0.)
+          if (de * df >= 0.)
             continue;
           const double s0 = std::max(0., (f.end - e.start) * unit);
           const double s1 = std::min(le, (f.start - e.start) * unit);

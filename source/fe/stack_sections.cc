@@ -71,39 +71,65 @@ namespace coaxfit
           mean_outer_diameter(*drawn[k + 1], z_lo[k], z_hi[k]));
       }
 
-    // One plane of symmetry through every joint's middle: the half model.
+    // Bodies that are not neighbours must not overlap, nor touch: that
+    // contact is not modelled.
+    for (unsigned int i = 0; i < N; ++i)
+      for (unsigned int j = i + 2; j < N; ++j)
+        {
+          check_apart(*drawn[i], *drawn[j]);
+          std::vector<JointPiece> touching;
+          try
+            {
+              touching = find_joint(*drawn[i], *drawn[j]);
+            }
+          catch (const InputError &)
+            {
+              // They do not meet: as it should be.
+            }
+          if (!touching.empty())
+            throw InputError(
+              "parameters " + entries[i] + " and " + entries[j]
+              + ": the sections touch from z = "
+              + number(touching[0].start[1], 6)
+              + ", D = " + number(2. * touching[0].start[0], 6)
+              + " to z = " + number(touching[0].end[1], 6)
+              + ", D = " + number(2. * touching[0].end[0], 6)
+              + ", but they are not neighbours in Assembly/Bodies, whose "
+                "joints alone are modelled; allowed: only neighbours meet");
+        }
+
+    // One plane of symmetry through every joint's middle: the half model;
+    // anything else is modelled whole.
     std::vector<const SectionOutline *> all;
     for (const auto &outline : drawn)
       all.push_back(outline.get());
-    const std::optional<double> plane = mirror_plane(all);
-    std::string                 why;
-    if (!plane)
-      why = "the sections are not symmetric about one plane across the axis";
-    else
-      for (unsigned int k = 0; k + 1 < N && why.empty(); ++k)
-        if (std::abs(*plane - 0.5 * (z_lo[k] + z_hi[k])) > tol)
-          why = "the joint of " + entries[k] + " and " + entries[k + 1]
-                + " (z = " + number(z_lo[k], 6) + " to " + number(z_hi[k], 6)
-                + ") is not centred on the plane of symmetry z = "
-                + number(*plane, 6);
-    for (unsigned int b = 0; b < N && why.empty(); ++b)
+    const std::optional<double> plane     = mirror_plane(all);
+    bool                        symmetric = plane.has_value();
+    for (unsigned int k = 0; k + 1 < N && symmetric; ++k)
+      symmetric = std::abs(*plane - 0.5 * (z_lo[k] + z_hi[k])) <= tol;
+    for (unsigned int b = 0; b < N && symmetric; ++b)
       {
         std::optional<SectionOutline> part = half_outline(*drawn[b], *plane);
-        if (!part)
-          why = "the half of " + entries[b]
-                + " beside the plane of symmetry is not one region (or a "
-                  "fillet touches the plane)";
-        else
+        symmetric                          = part.has_value();
+        if (symmetric)
           half.push_back(
             std::make_unique<SectionOutline>(shifted(*part, -*plane)));
       }
-    if (!why.empty())
-      throw InputError("parameters " + entries.front() + " to " + entries.back()
-                       + ": " + why
-                       + "; a stack with sections is modelled as the half "
-                         "of a stack symmetric about one plane through the "
-                         "middle of every joint in this version");
-    z_m = *plane;
+    if (symmetric)
+      {
+        z_m = *plane;
+        for (unsigned int k = 0; k + 1 < N; ++k)
+          start.push_back(0.);
+      }
+    else
+      {
+        half.clear();
+        for (unsigned int b = 0; b < N; ++b)
+          half.push_back(std::make_unique<SectionOutline>(*drawn[b]));
+        z_m   = 0.;
+        start = z_lo;
+      }
+    half_model_ = symmetric;
   }
 
 
@@ -163,14 +189,24 @@ namespace coaxfit
                                                        8. * settings.cell_size;
     const std::vector<double> from_middle = joint_offsets(
       half_length[k], settings.cell_size, settings.grading_ratio, h_max);
-    std::vector<double> z(from_middle.rbegin(), from_middle.rend());
-    const double        R = radius[k];
-    z                     = with_corners(
+    // A whole joint: graded from both ends, a vertex at its middle.
+    const double        middle = joint_middle(k);
+    std::vector<double> z;
+    if (!half_model_)
+      {
+        for (const double x : from_middle)
+          z.push_back(middle - x);
+        z.push_back(middle);
+      }
+    for (auto x = from_middle.rbegin(); x != from_middle.rend(); ++x)
+      z.push_back(middle + *x);
+    const double R = radius[k];
+    z              = with_corners(
       z,
       {half[k].get(), half[k + 1].get()},
       [R](const double) { return R; },
-      0.,
-      half_length[k]);
+      start[k],
+      start[k] + (half_model_ ? 1. : 2.) * half_length[k]);
     std::vector<Point<2>> vertices;
     for (const double zi : z)
       vertices.emplace_back(R, zi);
@@ -186,12 +222,12 @@ namespace coaxfit
     std::vector<TaggedSegment> joints;
     for (unsigned int k = 0; k + 1 < N; ++k)
       {
-        TaggedSegment joint{Point<2>(radius[k], 0.),
-                            Point<2>(radius[k], half_length[k]),
+        TaggedSegment joint{Point<2>(radius[k], start[k]),
+                            Point<2>(radius[k], joint_end(k)),
                             BoundaryId::joint};
         joint.vertices = joint_vertices(k, settings);
         // The middle of a half model's joint is no end.
-        joint.refine_ends = false;
+        joint.refine_ends = !half_model_;
         joints.push_back(joint);
       }
     std::vector<std::shared_ptr<Triangulation<2>>> meshes(N);
@@ -212,7 +248,7 @@ namespace coaxfit
           const SectionOutline &outline = *half[b];
           const double          tol     = 1e-9 * outline.extent();
           for (const OutlineEdge &edge : outline.edges())
-            if (!edge.is_arc() && std::abs(edge.start[1]) <= tol
+            if (half_model_ && !edge.is_arc() && std::abs(edge.start[1]) <= tol
                 && std::abs(edge.end[1]) <= tol)
               {
                 TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
@@ -223,7 +259,11 @@ namespace coaxfit
           local.refinement_points.clear();
           for (const unsigned int k : {b - 1, b})
             if (k < joints.size()) // b - 1 wraps round for b = 0
-              local.refinement_points.push_back(joints[k].end);
+              {
+                local.refinement_points.push_back(joints[k].end);
+                if (!half_model_)
+                  local.refinement_points.push_back(joints[k].start);
+              }
           local.full_quad = full_quad;
           meshes[b]       = std::make_shared<Triangulation<2>>();
           split += make_section_mesh(*meshes[b], outline, boundary, local);

@@ -492,8 +492,9 @@ namespace coaxfit
               "first, in the drawing's coordinates shared by every body "
               "(a gear wheel with its web, a flanged sleeve). Its joints "
               "with its neighbours are found where the sections meet, each "
-              "one cylinder; the stack must be symmetric about one plane "
-              "through the middle of every joint. Empty: the plain ring.",
+              "one cylinder. A stack symmetric about one plane through "
+              "the middle of every joint is modelled as its half, any "
+              "other whole. Empty: the plain ring.",
           Patterns::Anything());
       }
     prm.leave_subsection();

@@ -43,11 +43,40 @@ namespace coaxfit
      * fields.
      */
     Vector<double> load_shift;
+    /**
+     * Whether the joint is modelled whole (a stack of sections without a
+     * common plane of symmetry); else its half from the mid-plane z = 0.
+     */
+    bool whole = false;
 
     unsigned int
     n_points() const
     {
       return z.size();
+    }
+
+    /** The joint's length l_F (mm): twice the half model's. */
+    double
+    length() const
+    {
+      return whole ? z.back() - z.front() : 2. * z.back();
+    }
+
+    /**
+     * The point at the joint's middle (the mid-plane's of a half model;
+     * a whole joint's nearest to its middle).
+     */
+    unsigned int
+    middle() const
+    {
+      if (!whole)
+        return 0;
+      const double m    = 0.5 * (z.front() + z.back());
+      unsigned int best = 0;
+      for (unsigned int i = 1; i < n_points(); ++i)
+        if (std::abs(z[i] - m) < std::abs(z[best] - m))
+          best = i;
+      return best;
     }
 
     /** The radial interference left at point @p i under the loads (mm). */

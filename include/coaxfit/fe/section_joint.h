@@ -52,6 +52,16 @@ namespace coaxfit
   find_joint(const SectionOutline &inner, const SectionOutline &outer);
 
   /**
+   * Refuse sections @p inner and @p outer that overlap (find_joint()'s
+   * first check, also for bodies that need not meet): a corner of one
+   * inside the other farther than the tolerance from its boundary, or two
+   * straight edges that cross.
+   * @throws InputError naming both entries, how far and where.
+   */
+  void
+  check_apart(const SectionOutline &inner, const SectionOutline &outer);
+
+  /**
    * The outer diameter of @p hub averaged over the axial extent [@p z_start,
    * @p z_end] of a joint (mm): at each z the largest diameter of the
    * section there, its mean over z. DIN 7190's plain-cylinder estimate of a

@@ -21,13 +21,17 @@ namespace coaxfit
    * out (its joint), the plane about which the whole stack is symmetric,
    * and the half sections the model meshes.
    *
-   * This version models stacks whose every joint is one cylinder and
-   * whose sections are all symmetric about one plane across the axis that
-   * passes through the middle of every joint (a gear wheel with a web
+   * This version models stacks whose every joint is one cylinder. A
+   * stack whose sections are all symmetric about one plane across the
+   * axis through the middle of every joint (a gear wheel with a web
    * between its boss and its rim seat, a flanged sleeve, rings of
-   * different lengths centred on one plane): the half z >= z_m of each
-   * section, shifted so that the plane is z = 0 of the model (u_z = 0
-   * there). Anything else is refused with one line naming the entries.
+   * different lengths centred on one plane) is modelled as the half
+   * z >= z_m of each section, shifted so that the plane is z = 0 of the
+   * model (u_z = 0 there). Any other (an offset web, a boss longer on one
+   * side) is modelled whole in the drawing's coordinates, each body's
+   * axial rigid motion held at one of its joint nodes
+   * (BodyDiscretization): frictionless cylindrical joints pass no axial
+   * force, so that reaction is zero.
    *
    * The two bodies of a joint are meshed by gmsh with the same vertices
    * on it (graded towards its end from Mesh/Cell size), so that their
@@ -59,7 +63,10 @@ namespace coaxfit
       return *drawn[b];
     }
 
-    /** The modelled half of body @p b's section (model z >= 0). */
+    /**
+     * The modelled section of body @p b: its half z >= 0 in the half
+     * model, else as drawn.
+     */
     const SectionOutline &
     modelled(unsigned int b) const
     {
@@ -80,11 +87,42 @@ namespace coaxfit
       return radius[k];
     }
 
-    /** The half length of joint @p k (mm): it spans model z 0 to this. */
+    /** The half length of joint @p k (mm). */
     double
     joint_half_length(unsigned int k) const
     {
       return half_length[k];
+    }
+
+    /**
+     * Whether the model is the half z >= 0 of a stack symmetric about a
+     * plane through every joint's middle (else the sections whole, in the
+     * drawing's coordinates).
+     */
+    bool
+    half_model() const
+    {
+      return half_model_;
+    }
+
+    /**
+     * Model z of joint @p k's ends and middle (mm): 0, its half length and
+     * 0 in the half model.
+     */
+    double
+    joint_start(unsigned int k) const
+    {
+      return start[k];
+    }
+    double
+    joint_end(unsigned int k) const
+    {
+      return start[k] + (half_model_ ? 1. : 2.) * half_length[k];
+    }
+    double
+    joint_middle(unsigned int k) const
+    {
+      return half_model_ ? 0. : start[k] + half_length[k];
     }
 
     /**
@@ -128,7 +166,9 @@ namespace coaxfit
     std::vector<std::unique_ptr<SectionOutline>> drawn, half;
     std::vector<double>                          radius, half_length;
     std::vector<double>                          outer_mean; ///< per joint
-    double                                       z_m = 0.;
+    std::vector<double>                          start; ///< joints' model z
+    double                                       z_m         = 0.;
+    bool                                         half_model_ = true;
 
     /** The vertices of joint @p k between its ends, ascending. */
     std::vector<Point<2>>

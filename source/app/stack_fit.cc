@@ -799,7 +799,12 @@ namespace coaxfit
                                       && face->boundary_id()
                                            != BoundaryId::symmetry;
                              }))
-        f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
+        if (s.von_mises() >= f.von_mises_max)
+          {
+            f.von_mises_max   = s.von_mises();
+            f.von_mises_max_z = s.z + parameters.sections->drawing_offset();
+            f.von_mises_max_d = 2. * s.r;
+          }
     f.brittle          = parameters.materials[b].kind == MaterialKind::brittle;
     f.tensile_strength = parameters.materials[b].tensile_strength;
     f.fracture_safety
@@ -1333,6 +1338,9 @@ namespace coaxfit
         out << "  " << f.name << ": von Mises " << std::setprecision(6)
             << f.von_mises_mid_plane << " MPa at the mid-plane, "
             << f.von_mises_max << " MPa at most on its surfaces";
+        if (!std::isnan(f.von_mises_max_z))
+          out << " (at z " << f.von_mises_max_z << ", D " << f.von_mises_max_d
+              << " mm)";
         // A brittle body is judged against fracture, not yield.
         if (f.yield_strength > 0. && !f.brittle)
           {

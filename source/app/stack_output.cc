@@ -287,6 +287,9 @@ namespace coaxfit
         Json b = {{"name", f.name},
                   {"von_mises_mid_plane", f.von_mises_mid_plane},
                   {"von_mises_max", f.von_mises_max}};
+        if (!std::isnan(f.von_mises_max_z))
+          b["von_mises_max_at"]
+            = {{"z", f.von_mises_max_z}, {"diameter", f.von_mises_max_d}};
         if (f.yield_strength > 0. && !f.brittle)
           {
             b["yield_strength"] = f.yield_strength;

@@ -95,6 +95,7 @@ namespace coaxfit
         {
           const Point<2> &x = fe_values.quadrature_point(q);
           states[q].z       = x[1];
+          states[q].r       = x[0];
           states[q].sigma   = Axisymmetric::stress(
             material,
             Axisymmetric::mechanical(Axisymmetric::strain(values[q][0],
@@ -185,8 +186,14 @@ namespace coaxfit
     const double tolerance
       = 1e-10 * std::max(body.geometry().r_outer, body.geometry().length);
     const unsigned int degree = body.get_dof_handler().get_fe().degree;
-    // Sum and count of the values at each z (shared vertices: two cells).
-    std::map<double, std::pair<StressState, unsigned int>> by_z;
+    // Sum and count of the values at each point (shared vertices: two
+    // cells), by z and then r.
+    struct Sum
+    {
+      StressState  state;
+      unsigned int count = 0;
+    };
+    std::map<double, std::vector<Sum>> by_z;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       for (const unsigned int f : GeometryInfo<2>::face_indices())
         {
@@ -204,20 +211,38 @@ namespace coaxfit
               // Merge points that differ by round-off only.
               auto it = by_z.lower_bound(s.z - tolerance);
               if (it == by_z.end() || it->first > s.z + tolerance)
-                it = by_z.emplace(s.z, std::make_pair(StressState(), 0u)).first;
+                it = by_z.emplace(s.z, std::vector<Sum>()).first;
+              auto point = std::find_if(it->second.begin(),
+                                        it->second.end(),
+                                        [&](const Sum &sum) {
+                                          return std::abs(sum.state.r - s.r)
+                                                 <= tolerance;
+                                        });
+              if (point == it->second.end())
+                {
+                  it->second.push_back(Sum());
+                  point          = it->second.end() - 1;
+                  point->state.r = s.r;
+                }
               for (unsigned int c = 0; c < 4; ++c)
-                it->second.first.sigma[c] += s.sigma[c];
-              ++it->second.second;
+                point->state.sigma[c] += s.sigma[c];
+              ++point->count;
             }
         }
     std::vector<StressState> states;
-    for (auto &[z, sum] : by_z)
+    for (auto &[z, sums] : by_z)
       {
-        StressState s = sum.first;
-        s.z           = z;
-        for (double &c : s.sigma)
-          c /= sum.second;
-        states.push_back(s);
+        std::sort(sums.begin(), sums.end(), [](const Sum &a, const Sum &b) {
+          return a.state.r < b.state.r;
+        });
+        for (const Sum &sum : sums)
+          {
+            StressState s = sum.state;
+            s.z           = z;
+            for (double &c : s.sigma)
+              c /= sum.count;
+            states.push_back(s);
+          }
       }
     return states;
   }

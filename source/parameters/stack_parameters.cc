@@ -1192,6 +1192,24 @@ namespace coaxfit
               message.substr(begin, message.find('>', begin) - begin),
               "in parameter file '" + filename + "'");
           }
+        // A section of a body the list does not have.
+        if (entry_at != std::string::npos
+            && message.find("declared in subsection Geometry")
+                 != std::string::npos)
+          {
+            const std::size_t begin = entry_at + entry_marker.size();
+            const std::string entry
+              = message.substr(begin, message.find('>', begin) - begin);
+            std::string list;
+            for (const std::string &b : p.bodies)
+              list += (list.empty() ? "" : ", ") + b;
+            throw InputError("parameter Geometry/" + entry
+                             + " in parameter file '" + filename
+                             + "': no such entry; allowed are "
+                               "`<body> section` of the bodies of "
+                               "Assembly/Bodies ("
+                             + list + ")");
+          }
         throw;
       }
     for (const auto &[path, value] : overrides)
@@ -1200,6 +1218,10 @@ namespace coaxfit
         const std::vector<std::string> parts = split_path(path);
         if (parts.size() == 2 && parts[0] == "Operation")
           check_operation_entry(p, parts[1], "--set " + path + "=" + value);
+        if (parts.size() == 2 && parts[0] == "Geometry" && !p.declares(path))
+          throw InputError("--set " + path + "=" + value
+                           + ": no such entry; allowed are Geometry/<body> "
+                             "section of the bodies of Assembly/Bodies");
         set_entry(prm, path, value);
       }
 

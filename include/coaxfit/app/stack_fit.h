@@ -116,10 +116,16 @@ namespace coaxfit
     std::string name;
     double      von_mises_mid_plane; ///< MPa
     double      von_mises_max;       ///< MPa, over the body's surfaces
-    double      yield_strength;      ///< MPa; 0: unknown
-    double      yield_safety;        ///< 0: unknown yield strength
-    bool        brittle;             ///< Material/<body>/Kind brittle
-    double      tensile_strength;    ///< R_m, MPa; 0: unknown
+    /**
+     * A section: where on its surfaces von_mises_max is (the drawing's z
+     * and D, mm); NaN for a ring.
+     */
+    double von_mises_max_z = std::numeric_limits<double>::quiet_NaN();
+    double von_mises_max_d = std::numeric_limits<double>::quiet_NaN();
+    double yield_strength;   ///< MPa; 0: unknown
+    double yield_safety;     ///< 0: unknown yield strength
+    bool   brittle;          ///< Material/<body>/Kind brittle
+    double tensile_strength; ///< R_m, MPa; 0: unknown
     /** The largest hoop stress on its surfaces at the mid-plane (MPa). */
     double hoop_mid_plane;
     /**

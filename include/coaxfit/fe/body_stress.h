@@ -20,6 +20,7 @@ namespace coaxfit
   struct StressState
   {
     double                z = 0.; ///< axial position (mm)
+    double                r = 0.; ///< radius (mm)
     Axisymmetric::Vector4 sigma{{0., 0., 0., 0.}};
 
     double
@@ -73,7 +74,7 @@ namespace coaxfit
   /**
    * The stresses of @p solution at the support points of the faces of
    * @p body for which @p on_surface (cell, face index) is true, ordered by
-   * z; the values of the cells at a shared point averaged.
+   * z (and r); the values of the cells at a shared point averaged.
    */
   std::vector<StressState>
   stresses_on_faces(

@@ -394,6 +394,34 @@ namespace coaxfit
 
 
 
+  std::vector<std::string>
+  StackFit::cautions() const
+  {
+    std::vector<std::string> list = parameters.warnings();
+    // A section's largest stress on its surfaces (a fillet, a corner)
+    // above its yield strength, in either state.
+    for (const auto *state : {&bodies_out, &bodies_assembly})
+      for (const BodyFigures &f : *state)
+        if (!std::isnan(f.von_mises_max_z) && !f.brittle
+            && f.yield_strength > 0. && f.von_mises_max > f.yield_strength)
+          {
+            std::ostringstream s;
+            s << std::setprecision(4) << f.name << " yields locally"
+              << (state == &bodies_assembly ? " in the state of assembly" : "")
+              << ": von Mises " << f.von_mises_max << " MPa at z "
+              << f.von_mises_max_z << ", D " << f.von_mises_max_d
+              << " mm on its surfaces (a fillet or corner) exceeds R_e "
+              << f.yield_strength
+              << " MPa; the yield safety judges the mid-plane as DIN 7190 "
+                 "does, and at a sharp corner the value grows under "
+                 "refinement";
+            list.push_back(s.str());
+          }
+    return list;
+  }
+
+
+
   SectionMeshSettings
   StackFit::section_settings() const
   {
@@ -1387,7 +1415,7 @@ namespace coaxfit
           << ", max " << s.u_max << "; diameter change " << 2. * s.u_mean
           << " mm\n";
 
-    for (const std::string &caution : parameters.warnings())
+    for (const std::string &caution : cautions())
       out << "  caution: " << caution << '\n';
     out << "  " << verdict.line() << '\n';
 

@@ -220,7 +220,7 @@ namespace coaxfit
     j["assembly"]  = {{"bodies", parameters.bodies}};
     j["converged"] = converged;
     j["verdict"]   = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
-    j["warnings"]  = parameters.warnings();
+    j["warnings"]  = cautions();
     Json method;
     method["method"] = parameters.method == SolverMethod::monolithic ?
                          "monolithic" :

@@ -65,7 +65,7 @@ namespace coaxfit
           md << "- " << f << '\n';
         md << '\n';
       }
-    for (const std::string &caution : p.warnings())
+    for (const std::string &caution : cautions())
       md << "Caution: " << caution << ".\n\n";
     md << "The criteria: each joint with an interference touches; with a "
           "required torque each joint's safety against slip reaches "

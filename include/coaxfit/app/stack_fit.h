@@ -441,6 +441,13 @@ namespace coaxfit
     joint_alone(unsigned int k, unsigned int &staggered_steps) const;
 
     /**
+     * The cautions of the run: the parameters' (warnings()) and each
+     * section body whose largest von Mises stress on its surfaces exceeds
+     * its yield strength (local yield at a fillet or corner).
+     */
+    std::vector<std::string>
+    cautions() const;
+    /**
      * How the sections are meshed (Mesh/Cell size, 0: the shortest
      * joint's l_F / 100; Grading ratio; Global refinements).
      */

@@ -40,7 +40,11 @@ namespace coaxfit
              "set title 'Contact pressure of each joint: in the assembly "
              "(points), alone with the other bodies removed (dashed), "
              "plane-stress estimates (dotted)' font ',10'\n")
-       << "set xlabel 'z (mm), from the mid-plane'\n"
+       << "set xlabel 'z (mm), "
+       << (parameters.sections && !parameters.sections->half_model() ?
+             "of the drawing" :
+             "from the mid-plane")
+       << "'\n"
        << "set ylabel 'contact pressure (MPa)'\nset key outside bottom "
           "center horizontal\n"
        << "set yrange [0:" << p_top << "]\nplot ";

@@ -115,26 +115,6 @@ namespace coaxfit
               refuse(inner, outer, s.str());
             }
         }
-    // Sections aligned corner on edge overlap with no corner inside: the
-    // middle of an edge of one inside the other.
-    for (const auto &[a, b] :
-         {std::make_pair(&inner, &outer), std::make_pair(&outer, &inner)})
-      for (const OutlineEdge &e : a->edges())
-        {
-          double         distance = 0.;
-          const Point<2> p = e.is_arc() ? e.start : 0.5 * (e.start + e.end);
-          if (!e.is_arc() && inside(*b, p, distance) && distance > tolerance)
-            {
-              std::ostringstream s;
-              s << "the sections overlap: the point " << drawing_point(p)
-                << " of " << a->entry() << "'s outline lies " << distance
-                << " mm inside " << b->entry()
-                << "; allowed: sections that touch (drawn at the nominal "
-                   "size; the interference is given in Fit)";
-              refuse(inner, outer, s.str());
-            }
-        }
-
     // Two straight edges that cross properly.
     for (const OutlineEdge &e : inner.edges())
       for (const OutlineEdge &f : outer.edges())
@@ -157,6 +137,25 @@ namespace coaxfit
                      + drawing_point(e.start + t * de)
                      + "; allowed: sections that touch (drawn at the "
                        "nominal size; the interference is given in Fit)");
+        }
+    // Sections aligned corner on edge overlap with no corner inside: the
+    // middle of an edge of one inside the other.
+    for (const auto &[a, b] :
+         {std::make_pair(&inner, &outer), std::make_pair(&outer, &inner)})
+      for (const OutlineEdge &e : a->edges())
+        {
+          double         distance = 0.;
+          const Point<2> p = e.is_arc() ? e.start : 0.5 * (e.start + e.end);
+          if (!e.is_arc() && inside(*b, p, distance) && distance > tolerance)
+            {
+              std::ostringstream s;
+              s << "the sections overlap: the point " << drawing_point(p)
+                << " of " << a->entry() << "'s outline lies " << distance
+                << " mm inside " << b->entry()
+                << "; allowed: sections that touch (drawn at the nominal "
+                   "size; the interference is given in Fit)";
+              refuse(inner, outer, s.str());
+            }
         }
   }
 

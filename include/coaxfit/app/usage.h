@@ -53,6 +53,8 @@ namespace coaxfit
       "\n"
       "Several bodies (a file with Assembly/Bodies = Shaft, Sleeve, Hub,\n"
       "inside out; doc/several_bodies.md): every joint solved at once;\n"
+      "each body a plain ring (Geometry/<body>/...) or drawn as its\n"
+      "section (Geometry/<body> section = z, D; ...);\n"
       "summary.json, report.md, contact_pressure_<joint>.csv,\n"
       "interface_<joint>.vtp, <body>.vtu, solution.pvd. Such a file runs\n"
       "alone or with --sweep (one value after the other), not as one of\n"

@@ -17,6 +17,9 @@
 //    the pressure at the mid-plane exceeds the mean and the plane-stress
 //    estimate (printed to 1e-4: the values of a run checked against an
 //    independent axisymmetric CalculiX model, doc/several_bodies.md).
+//    A --sweep of the wheel's outline (values separated by '|'): the
+//    first value's row equals the single run (1e-12), a thinner web
+//    carries less.
 //    The same gear with its web offset to one side (no plane of
 //    symmetry: modelled whole): staggered = monolithic, the figures
 //    printed (at the joint's middle, the mean).
@@ -240,6 +243,54 @@ namespace
       }
   }
 
+  /**
+   * A sweep of the wheel's outline (values separated by '|', since an
+   * outline has commas and ';'): the web 16 mm thick as in gear_0 to 2,
+   * then 8 mm. sweep.csv's first row equals the single run, and the
+   * thinner web carries less.
+   */
+  void
+  check_sweep()
+  {
+    const std::string thin
+      = "-25, 50; 25, 50; 25, 80; 4, 80, 4; 4, 140, 4; 25, 140; 25, 160; "
+        "-25, 160; -25, 140; -4, 140, 4; -4, 80, 4; -25, 80; -25, 50";
+    std::filesystem::remove_all("web_sweep");
+    const RunResult r = run_coaxfit("web",
+                                    quiet + "--sweep \"Geometry/Wheel section="
+                                      + gear_body + "|" + thin + "\" gear.prm");
+    // The rows: the quoted outline, then the figures.
+    std::ifstream            in("web_sweep/sweep.csv");
+    std::string              line;
+    std::vector<std::string> header;
+    std::getline(in, line);
+    {
+      std::istringstream h(line.substr(line.find(',') + 1));
+      for (std::string field; std::getline(h, field, ',');)
+        header.push_back(field);
+    }
+    std::vector<double> mean;
+    while (std::getline(in, line))
+      {
+        std::istringstream f(line.substr(line.rfind('"') + 2));
+        std::string        field;
+        for (unsigned int c = 0; std::getline(f, field, ','); ++c)
+          if (header[c] == "Shaft-Wheel_pressure_mean_MPa")
+            mean.push_back(std::stod(field));
+      }
+    const nlohmann::json single = read_summary("gear_1");
+    std::cout << "a sweep of the wheel's outline (web 16 and 8 mm): exit "
+              << r.exit_code << ", " << mean.size() << " rows\n";
+    if (mean.size() == 2)
+      std::cout << "  web 16 mm: Shaft-Wheel mean = the single run's "
+                << agreement(mean[0],
+                             single["joints"][0]["pressure"]["mean"],
+                             1e-12)
+                << "\n  web 8 mm: " << std::setprecision(5) << mean[1]
+                << " MPa, " << (mean[1] < mean[0] ? "less" : "NOT less")
+                << " than with the 16 mm web\n";
+  }
+
   /** Part 4: a bad input is refused in one line, nothing written. */
   void
   refuse(const std::string &what, const std::string &options)
@@ -279,6 +330,7 @@ main()
 
   std::cout << "\n2. A gear wheel with a web between a shaft and a rim\n";
   check_gear("gear", "");
+  check_sweep();
   check_gear("offset",
              "",
              "-25, 50; 25, 50; 25, 80; 16, 80, 4; 16, 140, 4; 25, 140; 25, "

@@ -66,8 +66,11 @@ namespace coaxfit
     const std::string list = argument.substr(eq + 1);
     spec.entry             = trimmed(argument.substr(0, eq));
     const auto colon       = list.find(':');
-    // Values that contain commas (a list of joints) are separated by ';'.
-    const char separator = list.find(';') != std::string::npos ? ';' : ',';
+    // Values that contain commas (a list of joints) are separated by ';',
+    // values that contain ';' too (a section's outline) by '|'.
+    const char separator = list.find('|') != std::string::npos ? '|' :
+                           list.find(';') != std::string::npos ? ';' :
+                                                                 ',';
     if (colon != std::string::npos && list.find(',') == std::string::npos
         && separator == ',')
       {

@@ -192,8 +192,9 @@ namespace coaxfit
               double n_points = 0.;
               for (const unsigned int k : {b - 1, b})
                 if (k < parameters.n_joints())
-                  n_points
-                    += p * sections.joint_half_length(k) / h * refined + 1.;
+                  n_points += p * (sections.half_model() ? 1. : 2.)
+                                * sections.joint_half_length(k) / h * refined
+                              + 1.;
               needed += estimated_memory(static_cast<std::size_t>(
                                            std::min(2. * p * p * cells, 1e15)),
                                          p)

@@ -129,7 +129,7 @@ namespace coaxfit
         std::ofstream out = open_result_file(name);
         out << "z_mm,pressure_MPa,contact,pressure_alone_MPa"
             << (has_loads() ? ",pressure_assembly_MPa,contact_assembly" : "")
-            << '\n';
+            << (parameters.sections ? ",z_drawing_mm" : "") << '\n';
         for (unsigned int i = 0; i < joint.n_points(); ++i)
           {
             out << joint.z[i] << ',' << p[i] << ','
@@ -137,6 +137,10 @@ namespace coaxfit
             if (has_loads())
               out << ',' << p_assembly[i] << ','
                   << (assembly_solution.contact[k][i] ? 1 : 0);
+            // Sections: z of the drawing too (a half model's z is from
+            // its plane of symmetry).
+            if (parameters.sections)
+              out << ',' << joint.z[i] + parameters.sections->drawing_offset();
             out << '\n';
           }
         close_result_file(out, name);

@@ -1,3 +1,4 @@
+#include <coaxfit/fe/mesh.h>
 #include <coaxfit/fe/section_placement.h>
 
 #include <algorithm>
@@ -145,5 +146,40 @@ namespace coaxfit
           }
     std::sort(z.begin(), z.end());
     return z;
+  }
+
+
+
+  std::vector<TaggedSegment>
+  symmetry_segments(const SectionOutline &outline)
+  {
+    std::vector<TaggedSegment> segments;
+    const double               tol = 1e-9 * outline.extent();
+    for (const OutlineEdge &edge : outline.edges())
+      if (!edge.is_arc() && std::abs(edge.start[1]) <= tol
+          && std::abs(edge.end[1]) <= tol)
+        {
+          TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
+          plane.refine_ends = false;
+          segments.push_back(plane);
+        }
+    return segments;
+  }
+
+
+
+  void
+  tag_free_faces_at_radius(Triangulation<2>        &mesh,
+                           const double             r,
+                           const double             extent,
+                           const types::boundary_id id)
+  {
+    const double tol = 1e-9 * extent;
+    for (const auto &cell : mesh.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == SectionId::free
+            && std::abs(face->vertex(0)[0] - r) <= tol
+            && std::abs(face->vertex(1)[0] - r) <= tol)
+          face->set_boundary_id(id);
   }
 } // namespace coaxfit

@@ -206,13 +206,10 @@ namespace coaxfit
     const double r = pressure_radius(shaft);
     if (r <= 0.)
       return; // a solid shaft has no bore
-    const double tol = 1e-9 * drawn(shaft).extent();
-    for (const auto &cell : mesh.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == SectionId::free
-            && std::abs(face->vertex(0)[0] - r) <= tol
-            && std::abs(face->vertex(1)[0] - r) <= tol)
-          face->set_boundary_id(shaft ? BoundaryId::bore : BoundaryId::outer);
+    tag_free_faces_at_radius(mesh,
+                             r,
+                             drawn(shaft).extent(),
+                             shaft ? BoundaryId::bore : BoundaryId::outer);
   }
 
 
@@ -687,17 +684,12 @@ namespace coaxfit
   {
     SectionBoundary result;
     result.segments.push_back(joint);
-    const double tol = 1e-9 * outline.extent();
-    for (const OutlineEdge &edge : outline.edges())
-      if (half && !edge.is_arc() && std::abs(edge.start[1]) <= tol
-          && std::abs(edge.end[1]) <= tol)
-        {
-          TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
-          plane.refine_ends = false;
-          result.segments.push_back(plane);
-        }
+    if (half)
+      for (const TaggedSegment &plane : symmetry_segments(outline))
+        result.segments.push_back(plane);
     if (!cone)
       return result;
+    const double tol = 1e-9 * outline.extent();
     // A cone: the shaft held at its end face on the side the hub is pushed
     // towards, the hub at its end face on the other side (where the press
     // pushes it).

@@ -246,15 +246,9 @@ namespace coaxfit
           if (b + 1 < N)
             boundary.segments.push_back(joints[b]);
           const SectionOutline &outline = *half[b];
-          const double          tol     = 1e-9 * outline.extent();
-          for (const OutlineEdge &edge : outline.edges())
-            if (half_model_ && !edge.is_arc() && std::abs(edge.start[1]) <= tol
-                && std::abs(edge.end[1]) <= tol)
-              {
-                TaggedSegment plane{edge.start, edge.end, BoundaryId::symmetry};
-                plane.refine_ends = false;
-                boundary.segments.push_back(plane);
-              }
+          if (half_model_)
+            for (const TaggedSegment &plane : symmetry_segments(outline))
+              boundary.segments.push_back(plane);
           SectionMeshSettings local = settings;
           local.refinement_points.clear();
           for (const unsigned int k : {b - 1, b})
@@ -277,17 +271,13 @@ namespace coaxfit
     // bore, the outermost body's largest diameter.
     for (const unsigned int b : {0u, N - 1})
       {
-        const double r   = b == 0 ? bore_radius(0) : outer_radius(N - 1);
-        const double tol = 1e-9 * half[b]->extent();
-        if (r <= 0.)
-          continue;
-        for (const auto &cell : meshes[b]->active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && face->boundary_id() == SectionId::free
-                && std::abs(face->vertex(0)[0] - r) <= tol
-                && std::abs(face->vertex(1)[0] - r) <= tol)
-              face->set_boundary_id(b == 0 ? BoundaryId::bore :
-                                             BoundaryId::outer);
+        const double r = b == 0 ? bore_radius(0) : outer_radius(N - 1);
+        if (r > 0.)
+          tag_free_faces_at_radius(*meshes[b],
+                                   r,
+                                   half[b]->extent(),
+                                   b == 0 ? BoundaryId::bore :
+                                            BoundaryId::outer);
       }
     return meshes;
   }

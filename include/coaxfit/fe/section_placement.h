@@ -1,7 +1,10 @@
 #ifndef coaxfit_section_placement_h
 #define coaxfit_section_placement_h
 
+#include <deal.II/grid/tria.h>
+
 #include <coaxfit/fe/section_joint.h>
+#include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/fe/section_outline.h>
 
 #include <functional>
@@ -72,6 +75,24 @@ namespace coaxfit
                const std::function<double(double)>       &radius_at,
                double                                     z_start,
                double                                     z_end);
+
+  /**
+   * The straight edges of @p outline on the plane z = 0 of a half model,
+   * each a segment tagged BoundaryId::symmetry (its ends not refined).
+   */
+  std::vector<TaggedSegment>
+  symmetry_segments(const SectionOutline &outline);
+
+  /**
+   * Give the free faces (SectionId::free) of @p mesh that lie on the
+   * cylinder r = @p r (within 1e-9 of @p extent) the boundary id @p id:
+   * a bore or an outer surface that Operation's pressures load.
+   */
+  void
+  tag_free_faces_at_radius(Triangulation<2>  &mesh,
+                           double             r,
+                           double             extent,
+                           types::boundary_id id);
   /** @} */
 } // namespace coaxfit
 

@@ -774,6 +774,126 @@ namespace coaxfit
 
 
 
+  std::vector<double>
+  StackFit::check_radii(const unsigned int b) const
+  {
+    // A ring's bore and outside; a section's joints (its equivalent
+    // ring's diameters) and its smallest and largest radius.
+    std::set<double> radii = {parameters.rings[b].inner_diameter / 2.,
+                              parameters.rings[b].outer_diameter / 2.};
+    if (parameters.sections)
+      radii.insert({surface_radius(b, true), surface_radius(b, false)});
+    radii.erase(0.);
+    return std::vector<double>(radii.begin(), radii.end());
+  }
+
+
+
+  std::vector<StressState>
+  StackFit::mid_plane_stresses(const unsigned int    b,
+                               const Vector<double> &field) const
+  {
+    // The mid-plane: z = 0 of a half model; of a whole one, the plane
+    // through the middle of the body's bore joint (the innermost body's:
+    // its outer joint), on each radius its nearest nodes.
+    const StackJoint &own = stack_joints[b > 0 ? b - 1 : 0];
+    const double z_mid = own.whole ? 0.5 * (own.z.front() + own.z.back()) : 0.;
+    std::vector<StressState> result;
+    for (const double r : check_radii(b))
+      {
+        const std::vector<StressState> states
+          = stresses_along_radius(*bodies[b], field, r);
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const StressState &s : states)
+          nearest = std::min(nearest, std::abs(s.z - z_mid));
+        for (const StressState &s : states)
+          if (own.whole ? std::abs(s.z - z_mid) <= nearest : s.z == 0.)
+            result.push_back(s);
+      }
+    return result;
+  }
+
+
+
+  std::vector<StackStateFigures>
+  StackFit::evaluate(const std::vector<double> &U)
+  {
+    std::vector<FullMatrix<double>> C;
+    for (const auto &c : condensed)
+      C.push_back(c->get_compliance());
+    std::vector<StackStateFigures> result;
+    for (const bool loaded : {false, true})
+      {
+        if (loaded && !has_loads())
+          break;
+        std::vector<StackJoint> joints = stack_joints;
+        for (unsigned int k = 0; k < joints.size(); ++k)
+          {
+            joints[k].interference
+              = (U[k] - parameters.fits[k].smoothing_loss) / 2.;
+            if (!loaded)
+              joints[k].load_shift.reinit(0);
+          }
+        unsigned int     set_steps = 0;
+        const StackState state
+          = solve_stack_contact(C, joints, parameters.unilateral, set_steps);
+        for (const Vector<double> &force : state.force)
+          for (const double f : force)
+            if (!std::isfinite(f))
+              throw std::runtime_error(
+                "the fit selection's contact problem gave forces that are "
+                "not finite");
+        const std::vector<Vector<double>> field = body_fields(state, loaded);
+        StackStateFigures                 figures;
+        figures.state = loaded ? "in service" : "at assembly";
+        for (unsigned int k = 0; k < joints.size(); ++k)
+          {
+            const JointFigures f = joint_state(k, state, field);
+            figures.torque.push_back(parameters.fits[k].friction_coefficient
+                                     * f.p_mean * M_PI * f.diameter * f.diameter
+                                     * joints[k].length() / 2. / 1000.);
+            figures.p_mean.push_back(f.p_mean);
+            figures.touches.push_back(f.separated_points
+                                      < joints[k].n_points());
+          }
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          {
+            // The state of assembly without the bodies' thermal strain.
+            const BodyLoad load = bodies[b]->load();
+            if (!loaded)
+              bodies[b]->set_load(BodyLoad());
+            std::vector<Axisymmetric::Vector4> stress;
+            for (const StressState &s : mid_plane_stresses(b, field[b]))
+              stress.push_back(s.sigma);
+            bodies[b]->set_load(load);
+            figures.stress.push_back(stress);
+          }
+        result.push_back(figures);
+      }
+    return result;
+  }
+
+
+
+  void
+  StackFit::select_fits(std::ostream &out)
+  {
+    auto chosen = std::make_shared<StackFitSelection>(
+      parameters, [this](const std::vector<double> &U) { return evaluate(U); });
+    chosen->print(out);
+    if (chosen->found())
+      for (unsigned int j = 0; j < chosen->selected.size(); ++j)
+        {
+          const unsigned int k = chosen->selected[j];
+          parameters.use_iso_fit(k, chosen->chosen[j]);
+          stack_joints[k].interference
+            = parameters.fits[k].diametral_interference / 2.;
+        }
+    selection = chosen;
+  }
+
+
+
   BodyFigures
   StackFit::body_strength(const unsigned int    b,
                           const Vector<double> &field) const
@@ -782,36 +902,14 @@ namespace coaxfit
     f.name                = parameters.bodies[b];
     f.von_mises_mid_plane = f.von_mises_max = 0.;
     f.hoop_mid_plane = -std::numeric_limits<double>::infinity();
-    // A ring's bore and outside; a section's joints (its equivalent
-    // ring's diameters) and its smallest and largest radius.
-    std::set<double> radii = {parameters.rings[b].inner_diameter / 2.,
-                              parameters.rings[b].outer_diameter / 2.};
-    if (parameters.sections)
-      radii.insert({surface_radius(b, true), surface_radius(b, false)});
-    // The mid-plane: z = 0 of a half model; of a whole one, the plane
-    // through the middle of the body's bore joint (the innermost body's:
-    // its outer joint), on each radius its nearest nodes.
-    const StackJoint &own = stack_joints[b > 0 ? b - 1 : 0];
-    const double z_mid = own.whole ? 0.5 * (own.z.front() + own.z.back()) : 0.;
-    for (const double r : radii)
-      if (r > 0.)
-        {
-          const std::vector<StressState> states
-            = stresses_along_radius(*bodies[b], field, r);
-          double nearest = std::numeric_limits<double>::infinity();
-          for (const StressState &s : states)
-            nearest = std::min(nearest, std::abs(s.z - z_mid));
-          for (const StressState &s : states)
-            {
-              f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
-              if (own.whole ? std::abs(s.z - z_mid) <= nearest : s.z == 0.)
-                {
-                  f.von_mises_mid_plane
-                    = std::max(f.von_mises_mid_plane, s.von_mises());
-                  f.hoop_mid_plane = std::max(f.hoop_mid_plane, s.hoop());
-                }
-            }
-        }
+    for (const double r : check_radii(b))
+      for (const StressState &s : stresses_along_radius(*bodies[b], field, r))
+        f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
+    for (const StressState &s : mid_plane_stresses(b, field))
+      {
+        f.von_mises_mid_plane = std::max(f.von_mises_mid_plane, s.von_mises());
+        f.hoop_mid_plane      = std::max(f.hoop_mid_plane, s.hoop());
+      }
     // A section's largest stress may lie anywhere on its surfaces (a
     // fillet of its web).
     if (parameters.drawn_as_section(b))
@@ -1202,7 +1300,8 @@ namespace coaxfit
                                    "report.md",
                                    "plots.gp",
                                    "contact_pressure.png",
-                                   "convergence.png"};
+                                   "convergence.png",
+                                   "fit_selection.csv"};
     for (unsigned int k = 0; k < parameters.n_joints(); ++k)
       {
         files.insert("contact_pressure_" + parameters.joint_name(k) + ".csv");
@@ -1241,6 +1340,27 @@ namespace coaxfit
                 "whole (no plane of symmetry through every joint's "
                 "middle; z of the drawing)")
           << '\n';
+    if (parameters.select_mode())
+      {
+        const auto selecting = std::chrono::steady_clock::now();
+        select_fits(out);
+        timing["selection"] = seconds_since(selecting);
+        if (!selection->found())
+          {
+            // No fits: the selection and a verdict naming the conflict;
+            // a design question answered, no error.
+            verdict = Verdict({"no ISO fits found: " + selection->conflict});
+            out << "  " << verdict.line() << '\n';
+            output_selection_only(directory ? directory->staging_path() : into);
+            if (directory)
+              {
+                directory->commit(out);
+                out << "  results in " << parameters.output_directory() << '\n';
+              }
+            return 0;
+          }
+        out << '\n';
+      }
     for (unsigned int k = 0; k < parameters.n_joints(); ++k)
       out << "  " << parameters.joint_name(k) << ": D "
           << parameters.joint_diameter(k) << " mm, U "

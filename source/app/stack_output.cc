@@ -99,6 +99,48 @@ namespace coaxfit
 
 
 
+  void
+  StackFit::output_selection_only(const std::string &directory) const
+  {
+    {
+      const std::string name = directory + "/parameters.prm";
+      std::ofstream     out  = open_result_file(name);
+      out << parameters.used_prm;
+      close_result_file(out, name);
+    }
+    {
+      const std::string name = directory + "/fit_selection.csv";
+      std::ofstream     out  = open_result_file(name);
+      selection->write_csv(out);
+      close_result_file(out, name);
+    }
+    if (parameters.write_report)
+      {
+        const std::string name = directory + "/report.md";
+        std::ofstream     out  = open_result_file(name);
+        out << "# coaxfit: " << parameters.case_name
+            << "\n\nVerdict: FAILED\n\n";
+        for (const std::string &f : verdict.failed)
+          out << "- " << f << '\n';
+        out << '\n';
+        selection->print_markdown(out);
+        close_result_file(out, name);
+      }
+    Json j;
+    j["case"]              = parameters.case_name;
+    j["assembly"]          = {{"bodies", parameters.bodies}};
+    j["design_mode"]       = parameters.design_mode;
+    j["verdict"]           = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
+    j["warnings"]          = cautions();
+    j["selection"]         = Json::parse(selection->json());
+    const std::string name = directory + "/summary.json";
+    std::ofstream     out  = open_result_file(name);
+    out << j.dump(2) << '\n';
+    close_result_file(out, name);
+  }
+
+
+
   std::string
   StackFit::output_results(const std::string &directory) const
   {
@@ -111,6 +153,13 @@ namespace coaxfit
       out << parameters.used_prm;
       close_result_file(out, name);
     }
+    if (selection)
+      {
+        const std::string name = directory + "/fit_selection.csv";
+        std::ofstream     out  = open_result_file(name);
+        selection->write_csv(out);
+        close_result_file(out, name);
+      }
 
     // contact_pressure_<joint>.csv: the lumped pressure at each point.
     for (unsigned int k = 0; k < stack_joints.size(); ++k)
@@ -220,11 +269,14 @@ namespace coaxfit
 
     // summary.json, last.
     Json j;
-    j["case"]      = parameters.case_name;
-    j["assembly"]  = {{"bodies", parameters.bodies}};
-    j["converged"] = converged;
-    j["verdict"]   = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
-    j["warnings"]  = cautions();
+    j["case"]        = parameters.case_name;
+    j["assembly"]    = {{"bodies", parameters.bodies}};
+    j["converged"]   = converged;
+    j["verdict"]     = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
+    j["warnings"]    = cautions();
+    j["design_mode"] = parameters.design_mode;
+    if (selection)
+      j["selection"] = Json::parse(selection->json());
     Json method;
     method["method"] = parameters.method == SolverMethod::monolithic ?
                          "monolithic" :

@@ -77,6 +77,8 @@ namespace coaxfit
        << design_figure(p.fracture_safety)
        << " (Design/Fracture safety); a body without its strength is not "
           "judged.\n\n";
+    if (selection)
+      selection->print_markdown(md);
 
     if (has_loads())
       {

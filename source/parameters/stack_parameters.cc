@@ -614,6 +614,28 @@ namespace coaxfit
                       "e.g. grey cast iron) with a tensile strength must "
                       "have, for the verdict. Allowed: 1 to 100.",
                       Patterns::Double(1., 100.));
+    prm.add_parameter(
+      "Mode",
+      design_mode,
+      "check: the fits given (Fit) are checked. select: the ISO 286 fits "
+      "of the joints of Selected joints are chosen together, so that "
+      "every joint carries the Required torque with the Slip safety and "
+      "every body bears its stresses with the Yield (brittle: Fracture) "
+      "safety at every corner of the fits' bands, at assembly and with the "
+      "loads of Operation; the first combination (preferred fits, widest "
+      "bands) is checked by FE at the corners and then run at Fit/Case. "
+      "The fit entries of a selected joint are not used. Allowed: check, "
+      "select.",
+      Patterns::Selection("check|select"));
+    prm.add_parameter(
+      "Selected joints",
+      selected_text,
+      "With Mode = select: the joints whose ISO fits are chosen, named "
+      "<inner>-<outer> and separated by commas; the others keep their fit "
+      "entries. all: every joint except one given a clearance "
+      "(Diametral interference <= 0: a running fit, e.g. a bushing's "
+      "shaft). Allowed: all, or joints of Assembly/Bodies.",
+      Patterns::Anything());
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh");
@@ -862,7 +884,23 @@ namespace coaxfit
     bool iso = false;
     for (const JointFit &fit : fits)
       iso = iso || !fit.iso_fit.empty();
-    if (fit_case != "mean" && !iso)
+    if (select_mode())
+      {
+        if (std::find(selected.begin(), selected.end(), true) == selected.end())
+          throw InputError("parameter Design/Selected joints = " + selected_text
+                           + ": no joint is left to choose a fit for (each "
+                             "is given a clearance, a running fit); name "
+                             "the joints to choose, or set Design/Mode = "
+                             "check");
+        for (unsigned int k = 0; k < n_joints(); ++k)
+          if (selected[k] && candidate_fits(joint_diameter(k)).empty())
+            throw InputError("parameter Design/Mode = select: the joint "
+                             + joint_name(k) + " has D "
+                             + number(joint_diameter(k))
+                             + " mm, where ISO 286 gives no fits (allowed: "
+                               "over 1 up to 500 mm)");
+      }
+    if (fit_case != "mean" && !iso && !select_mode())
       throw InputError("parameter Fit/Case = " + fit_case
                        + ": no joint has an ISO fit, whose smallest or "
                          "largest interference it would choose (a "
@@ -958,6 +996,24 @@ namespace coaxfit
                            + ": its strength figures do not hold there");
       }
     return list;
+  }
+
+
+
+  void
+  StackParameters::use_iso_fit(const unsigned int k, const IsoFit &iso)
+  {
+    JointFit    &fit           = fits[k];
+    const double U_min         = 1e-3 * iso.min_interference();
+    const double U_max         = 1e-3 * iso.max_interference();
+    fit.nominal_interference   = fit_case == "min" ? U_min :
+                                 fit_case == "max" ? U_max :
+                                                     0.5 * (U_min + U_max);
+    fit.diametral_interference = fit.nominal_interference - fit.smoothing_loss;
+    fit.largest_interference   = U_max;
+    fit.iso_fit                = iso.name;
+    fit.source                 = "ISO fit " + iso.name + ", " + fit_case
+                 + ", chosen by Design/Mode = select";
   }
 
 
@@ -1248,9 +1304,34 @@ namespace coaxfit
       throw InputError("parameter Fit/ISO fit = " + p.default_fit.iso_fit
                        + ": give either Fit/Diametral interference or "
                          "Fit/ISO fit, not both");
+    // Design/Mode = select: the joints whose fits are chosen.
+    std::set<std::string> listed;
+    const bool            all_listed = p.selected_text == "all";
+    if (p.select_mode() && !all_listed)
+      for (const std::string &name :
+           Utilities::split_string_list(p.selected_text, ','))
+        {
+          bool known = false;
+          for (unsigned int k = 0; k < p.n_joints(); ++k)
+            known = known || name == p.joint_name(k);
+          if (!known || !listed.insert(name).second)
+            {
+              std::string joints;
+              for (unsigned int k = 0; k < p.n_joints(); ++k)
+                joints += (k ? ", " : "") + p.joint_name(k);
+              throw InputError("parameter Design/Selected joints = "
+                               + p.selected_text + ": '" + name + "' "
+                               + (known ? "is named twice" : "names no joint")
+                               + " (allowed: all, or joints of " + joints
+                               + ", separated by commas)");
+            }
+        }
+    p.selected.assign(p.n_joints(), false);
     p.fits.clear();
     for (unsigned int k = 0; k < p.n_joints(); ++k)
       {
+        const bool chosen
+          = p.select_mode() && (all_listed || listed.count(p.joint_name(k)));
         const std::string path = "Fit/" + p.joint_name(k) + "/";
         const std::string own
           = "Fit." + p.joint_name(k) + ".Diametral interference";
@@ -1309,8 +1390,19 @@ namespace coaxfit
             fit        = p.default_fit;
             fit.source = "Fit/Diametral interference";
           }
+        else if (chosen)
+          {
+            // Until the selection has chosen: 0.001 D.
+            fit.diametral_interference = 1e-3 * p.joint_diameter(k);
+            fit.source                 = "chosen (Design/Mode = select)";
+          }
         else
           missing.insert(own);
+        // With `all`, a joint given a clearance keeps it (a running fit).
+        p.selected[k] = chosen
+                        && !(all_listed && fit.iso_fit.empty()
+                             && (own_given || default_given)
+                             && fit.diametral_interference <= 0.);
         // A friction coefficient given for the joint wins over Fit's.
         fit.friction_coefficient = entries.friction_coefficient > 0. ?
                                      entries.friction_coefficient :

@@ -3,6 +3,7 @@
 
 #include <coaxfit/coupling/stack_coupling.h>
 #include <coaxfit/design/compound_cylinders.h>
+#include <coaxfit/design/stack_fit_selection.h>
 #include <coaxfit/design/verdict.h>
 #include <coaxfit/fe/body_discretization.h>
 #include <coaxfit/parameters/stack_parameters.h>
@@ -285,6 +286,30 @@ namespace coaxfit
       return steps;
     }
 
+    /**
+     * The stack at the measured diametral interferences @p U (mm, one per
+     * joint; each less its smoothing loss), solved monolithically on the
+     * condensed compliances (after setup_system()): the state of assembly
+     * and, with loads of operation, the state in service, each with what
+     * a fit selection judges (StackFitSelection).
+     */
+    std::vector<StackStateFigures>
+    evaluate(const std::vector<double> &U);
+
+    /**
+     * Design/Mode = select: choose the fits (StackFitSelection, printed
+     * to @p out) and, if found, put them into the parameters and joints.
+     */
+    void
+    select_fits(std::ostream &out);
+
+    /** The selection of Design/Mode = select (null: check mode). */
+    const StackFitSelection *
+    get_selection() const
+    {
+      return selection.get();
+    }
+
   private:
     /** The criteria of the verdict the figures fail (get_verdict()). */
     std::vector<std::string>
@@ -331,6 +356,32 @@ namespace coaxfit
     joint_state(unsigned int                       k,
                 const StackState                  &state,
                 const std::vector<Vector<double>> &state_fields) const;
+
+    /**
+     * The stresses of body @p b with the field @p field on its surfaces at
+     * the mid-plane (the points of the verdict's yield and fracture
+     * figures): a ring's bore and outside, a section's joints and its
+     * smallest and largest radius, at z = 0 of a half model or, whole, on
+     * the plane through the middle of its bore joint (the innermost
+     * body's: its joint).
+     */
+    std::vector<StressState>
+    mid_plane_stresses(unsigned int b, const Vector<double> &field) const;
+
+    /**
+     * The radii of body @p b's surfaces that its strength figures take
+     * (solid bodies' axis left out).
+     */
+    std::vector<double>
+    check_radii(unsigned int b) const;
+
+    /**
+     * Write the results of a selection that found no fits into
+     * @p directory: summary.json (the selection, the verdict naming the
+     * conflict), fit_selection.csv, report.md, parameters.prm.
+     */
+    void
+    output_selection_only(const std::string &directory) const;
 
     /**
      * The strength figures of body @p b with the field @p field (its
@@ -464,7 +515,10 @@ namespace coaxfit
     SurfaceFigures
     surface(const std::string &name) const;
 
-    const StackParameters                           &parameters;
+    /** A copy: Design/Mode = select puts the chosen fits in. */
+    StackParameters parameters;
+    /** The selection of Design/Mode = select (null: check). */
+    std::shared_ptr<const StackFitSelection>         selection;
     std::vector<std::unique_ptr<BodyDiscretization>> bodies;
     std::vector<std::unique_ptr<BodySolver>>         solvers;
     std::vector<std::unique_ptr<CondensedBody>>      condensed;

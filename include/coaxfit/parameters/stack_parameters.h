@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <coaxfit/fe/stack_sections.h>
+#include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/parameters.h>
 
 #include <memory>
@@ -171,6 +172,29 @@ namespace coaxfit
     double yield_safety = 1.;
     /** Design/Fracture safety: each brittle body's least safety. */
     double fracture_safety = 2.;
+    /**
+     * Design/Mode: `check` the fits given, or `select` the ISO 286 fits of
+     * the joints of Design/Selected joints (StackFitSelection).
+     */
+    std::string design_mode = "check";
+    /** Design/Selected joints as given: `all`, or joint names. */
+    std::string selected_text = "all";
+    /** Per joint: chosen by the selection (Design/Mode = select). */
+    std::vector<bool> selected;
+
+    /**
+     * Joint @p k takes the ISO fit @p fit (the selection's choice) at
+     * Fit/Case, its roughness's smoothing loss taken off.
+     */
+    void
+    use_iso_fit(unsigned int k, const IsoFit &fit);
+
+    /** Whether the run selects fits (Design/Mode = select). */
+    bool
+    select_mode() const
+    {
+      return design_mode == "select";
+    }
     /**
      * Fit/Case: which interference of the joints' ISO fits (every joint
      * the same): min, mean or max.

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace coaxfit
@@ -154,6 +155,14 @@ namespace coaxfit
                 continue;
               }
             row.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
+            // A selection that found no fits wrote only the selection.
+            if (fit.get_selection() && !fit.get_selection()->found())
+              {
+                row.values.assign(names.size() + 1,
+                                  std::numeric_limits<double>::quiet_NaN());
+                row.error = "no ISO fits found (Design/Mode = select)";
+                continue;
+              }
             row.values.push_back(fit.n_steps());
             for (const JointFigures &f : fit.joint_figures())
               for (const auto &column : joint_columns)

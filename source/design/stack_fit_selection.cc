@@ -680,17 +680,10 @@ namespace coaxfit
                       std::string("no limit"))
                 << std::defaultfloat << '\n';
           }
-        double      least = infinite;
-        std::string by;
-        for (const Check &c : checks)
-          if (c.margin < least)
-            {
-              least = c.margin;
-              by    = c.governed_by;
-            }
+        const Check *least = least_check();
         out << "  checked by FE at " << checks.size() << " corners of the "
-            << "bands: least margin " << figure(least, 5) << " (" << by
-            << "; 1 = the requirement)\n";
+            << "bands: least margin " << figure(least->margin, 5) << " ("
+            << least->governed_by << "; 1 = the requirement)\n";
         for (unsigned int r = 1; r < ranked.size() && r < 4; ++r)
           {
             std::vector<std::string> names;
@@ -801,16 +794,10 @@ namespace coaxfit
     for (unsigned int j = 0; j < chosen.size(); ++j)
       s << (j ? ", " : "") << quoted(chosen[j].name);
     // The criterion of the least FE margin at the corners.
-    double      least = infinite;
-    std::string governing;
-    for (const Check &c : checks)
-      if (c.margin < least)
-        {
-          least     = c.margin;
-          governing = c.governed_by;
-        }
-    s << "], \"governing\": " << quoted(governing)
-      << ", \"least_margin\": " << number(least) << ", \"joints\": [";
+    const Check *least = least_check();
+    s << "], \"governing\": " << quoted(least ? least->governed_by : "")
+      << ", \"least_margin\": " << number(least ? least->margin : infinite)
+      << ", \"joints\": [";
     for (unsigned int j = 0; j < selected.size(); ++j)
       {
         s << (j ? ", " : "")

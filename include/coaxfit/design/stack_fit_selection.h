@@ -156,6 +156,17 @@ namespace coaxfit
       return !chosen.empty();
     }
 
+    /** The FE check of least margin (null if none). */
+    const Check *
+    least_check() const
+    {
+      const Check *least = nullptr;
+      for (const Check &c : checks)
+        if (!least || c.margin < least->margin)
+          least = &c;
+      return least;
+    }
+
     /** The console table. */
     void
     print(std::ostream &out) const;

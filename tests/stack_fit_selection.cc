@@ -138,7 +138,8 @@ namespace
   closed_form_ranking(const std::vector<bool>   &chosen,
                       const std::vector<double> &fixed,
                       const double               torque,
-                      unsigned long             &n_combinations)
+                      unsigned long             &n_combinations,
+                      const std::string         &kept = "")
   {
     std::vector<std::vector<coaxfit::IsoFit>> lists(2);
     for (unsigned int k = 0; k < 2; ++k)
@@ -148,7 +149,8 @@ namespace
         else
           for (const coaxfit::IsoFit &f :
                coaxfit::candidate_fits(rings[k].outer_diameter))
-            if (f.min_interference() > 0.)
+            if (k == 1 && !kept.empty() ? f.name == kept :
+                                          f.min_interference() > 0.)
               lists[k].push_back(f);
       }
     std::vector<Choice> feasible;
@@ -379,6 +381,28 @@ main()
               << "; Shaft-Sleeve: " << j["joints"][0]["fit"].get<std::string>()
               << '\n';
     compare_checks(j, {false, true}, {0.04, 0.}, torque);
+  }
+
+  // 2b. Only Shaft-Sleeve chosen, Sleeve-Hub keeps H7/s6: its band's
+  // corners are part of every combination's box.
+  {
+    std::cout << "2b. Design/Selected joints = Shaft-Sleeve, Sleeve-Hub "
+                 "keeps ISO fit H7/s6 (0.036 to 0.093 mm)\n";
+    const std::string dir = base + "/kept";
+    std::string text = scene(torque, "  set Selected joints = Shaft-Sleeve\n");
+    text.replace(text.find("  set Friction"),
+                 0,
+                 "  subsection Sleeve-Hub\n    set ISO fit = H7/s6\n  end\n");
+    const nlohmann::json      j = run_scene(dir, write_scene(dir, text));
+    unsigned long             n = 0;
+    const std::vector<Choice> ranking
+      = closed_form_ranking({true, true}, {0., 0.}, torque, n, "H7/s6");
+    std::cout << "  combinations: run "
+              << j["selection"]["combinations"].get<unsigned long>()
+              << ", closed form " << n << "; feasible: run "
+              << j["selection"]["feasible"].get<unsigned long>()
+              << ", closed form " << ranking.size() << "; found "
+              << j["selection"]["found"] << '\n';
   }
 
   // 3. A torque no fit carries.

@@ -883,12 +883,13 @@ namespace coaxfit
     chosen->print(out);
     if (chosen->found())
       for (unsigned int j = 0; j < chosen->selected.size(); ++j)
-        {
-          const unsigned int k = chosen->selected[j];
-          parameters.use_iso_fit(k, chosen->chosen[j]);
-          stack_joints[k].interference
-            = parameters.fits[k].diametral_interference / 2.;
-        }
+        if (!chosen->kept[j])
+          {
+            const unsigned int k = chosen->selected[j];
+            parameters.use_iso_fit(k, chosen->chosen[j]);
+            stack_joints[k].interference
+              = parameters.fits[k].diametral_interference / 2.;
+          }
     selection = chosen;
   }
 

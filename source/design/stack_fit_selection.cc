@@ -53,9 +53,14 @@ namespace coaxfit
     : parameters(parameters)
   {
     const unsigned int J = parameters.n_joints();
+    // The selected joints, and those that keep an ISO fit: their bands
+    // are part of every combination's box (one candidate each).
     for (unsigned int k = 0; k < J; ++k)
-      if (parameters.selected[k])
-        selected.push_back(k);
+      if (parameters.selected[k] || !parameters.fits[k].iso_fit.empty())
+        {
+          selected.push_back(k);
+          kept.push_back(!parameters.selected[k]);
+        }
 
     // The linear model: each state at U_0 and with each selected joint's
     // interference raised by h.
@@ -101,6 +106,8 @@ namespace coaxfit
                 + parameters.bodies[b] + " " + state_names[s]);
           }
       }
+    criterion_names.push_back("no requirement (no Design/Required torque, "
+                              "no strength of a body)");
     criterion_names.push_back("contact lost");
 
     // Each selected joint's candidates, best ranked first.
@@ -115,12 +122,17 @@ namespace coaxfit
       return a.name < b.name;
     };
     double n_all = 1.;
-    for (const unsigned int k : selected)
+    for (unsigned int j = 0; j < selected.size(); ++j)
       {
+        const unsigned int  k = selected[j];
         std::vector<IsoFit> fits;
-        for (const IsoFit &f : candidate_fits(parameters.joint_diameter(k)))
-          if (1e-3 * f.min_interference() > parameters.fits[k].smoothing_loss)
-            fits.push_back(f);
+        if (kept[j])
+          fits.push_back(
+            iso_fit(parameters.fits[k].iso_fit, parameters.joint_diameter(k)));
+        else
+          for (const IsoFit &f : candidate_fits(parameters.joint_diameter(k)))
+            if (1e-3 * f.min_interference() > parameters.fits[k].smoothing_loss)
+              fits.push_back(f);
         std::stable_sort(fits.begin(), fits.end(), rank);
         n_fits.push_back(fits.size());
         n_all *= std::max<double>(fits.size(), 1.);
@@ -221,7 +233,7 @@ namespace coaxfit
     const unsigned int J = parameters.n_joints();
     Judgement          j;
     j.margin             = infinite;
-    j.which              = criterion_names.size() - 1;
+    j.which              = criterion_names.size() - 2;
     unsigned int c       = 0;
     std::size_t  o       = 0;
     const auto   improve = [&](const double ratio) {
@@ -238,8 +250,9 @@ namespace coaxfit
           for (unsigned int k = 0; k < J; ++k)
             improve(q[o + k]
                     / (parameters.required_torque * parameters.slip_safety));
-        for (const unsigned int k : selected)
-          j.touches = j.touches && q[o + J + k] > 0.;
+        for (unsigned int i = 0; i < selected.size(); ++i)
+          if (!kept[i])
+            j.touches = j.touches && q[o + J + selected[i]] > 0.;
         std::size_t at = o + 2 * J;
         for (unsigned int b = 0; b < n_points.size(); ++b)
           {
@@ -339,7 +352,7 @@ namespace coaxfit
       {
         ++n_combinations;
         double       margin  = infinite;
-        unsigned int which   = criterion_names.size() - 1;
+        unsigned int which   = criterion_names.size() - 2;
         bool         touches = true;
         for (unsigned int corner = 0; corner < corners && touches; ++corner)
           {
@@ -533,7 +546,7 @@ namespace coaxfit
     for (unsigned int j = 0; j < J_s; ++j)
       {
         Band band;
-        band.low         = 0.;
+        band.low         = -infinite;
         band.high        = infinite;
         const auto lower = [&](const double U, const std::string &by) {
           if (U > band.low)
@@ -583,11 +596,13 @@ namespace coaxfit
                                    b[o_s + k],
                                    criterion_names[name]);
                     }
-                for (const unsigned int k : selected)
-                  linear_bound(a[o_s + J + k],
-                               b[o_s + J + k],
-                               "contact of " + parameters.joint_name(k) + " "
-                                 + state_names[s]);
+                for (unsigned int i = 0; i < J_s; ++i)
+                  if (!kept[i])
+                    linear_bound(a[o_s + J + selected[i]],
+                                 b[o_s + J + selected[i]],
+                                 "contact of "
+                                   + parameters.joint_name(selected[i]) + " "
+                                   + state_names[s]);
                 at = o_s + 2 * J;
                 for (unsigned int body = 0; body < n_points.size(); ++body)
                   {
@@ -645,9 +660,10 @@ namespace coaxfit
   {
     out << "\n  fit selection (Design/Mode = select): ";
     for (unsigned int j = 0; j < selected.size(); ++j)
-      out << (j ? ", " : "") << parameters.joint_name(selected[j]) << " from "
-          << n_fits[j];
-    out << " ISO 286 fits; " << n_combinations << " combinations judged on "
+      out << (j ? ", " : "") << parameters.joint_name(selected[j])
+          << (kept[j] ? " keeps its ISO fit" :
+                        " from " + std::to_string(n_fits[j]) + " ISO 286 fits");
+    out << "; " << n_combinations << " combinations judged on "
         << "the linear model (" << n_feasible << " carry the requirement), "
         << n_solves << " FE states solved\n";
     if (!found())
@@ -673,8 +689,11 @@ namespace coaxfit
                 << figure(parameters.joint_diameter(selected[j])) << "  "
                 << std::left << std::setw(8) << f.name << "  " << std::setw(17)
                 << band.str() << std::right << std::fixed
-                << std::setprecision(4) << bands[j].low << " ("
-                << bands[j].low_by << ") - "
+                << std::setprecision(4)
+                << (std::isfinite(bands[j].low) ?
+                      figure(bands[j].low, 4) + " (" + bands[j].low_by + ")" :
+                      std::string("no limit"))
+                << " - "
                 << (std::isfinite(bands[j].high) ?
                       figure(bands[j].high, 4) + " (" + bands[j].high_by + ")" :
                       std::string("no limit"))
@@ -724,9 +743,10 @@ namespace coaxfit
               << chosen[j].name << " | "
               << figure(1e-3 * chosen[j].min_interference()) << " to "
               << figure(1e-3 * chosen[j].max_interference()) << " | "
-              << figure(bands[j].low) << " to " << figure(bands[j].high)
-              << " | " << bands[j].low_by << "; "
-              << (std::isfinite(bands[j].high) ? bands[j].high_by : "-")
+              << (std::isfinite(bands[j].low) ? figure(bands[j].low) :
+                                                "no limit")
+              << " to " << figure(bands[j].high) << " | " << bands[j].low_by
+              << "; " << (std::isfinite(bands[j].high) ? bands[j].high_by : "-")
               << " |\n";
         out << "\nThe FE check of the chosen fits (margin: the least ratio "
                "of a safety to its requirement):\n\n| U mm | margin FE | "
@@ -804,7 +824,8 @@ namespace coaxfit
           << "{\"name\": " << quoted(parameters.joint_name(selected[j]))
           << ", \"diameter\": "
           << number(parameters.joint_diameter(selected[j]))
-          << ", \"candidates\": " << n_fits[j];
+          << ", \"candidates\": " << n_fits[j]
+          << ", \"kept\": " << (kept[j] ? "true" : "false");
         if (found())
           s << ", \"fit\": " << quoted(chosen[j].name)
             << ", \"U_min\": " << number(1e-3 * chosen[j].min_interference())

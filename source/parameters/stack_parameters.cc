@@ -1307,6 +1307,12 @@ namespace coaxfit
     // Design/Mode = select: the joints whose fits are chosen.
     std::set<std::string> listed;
     const bool            all_listed = p.selected_text == "all";
+    if (p.select_mode() && !all_listed
+        && Utilities::split_string_list(p.selected_text, ',').empty())
+      throw InputError("parameter Design/Selected joints = '" + p.selected_text
+                       + "': names no joint (allowed: all, or joints of "
+                         "Assembly/Bodies named <inner>-<outer>, separated "
+                         "by commas)");
     if (p.select_mode() && !all_listed)
       for (const std::string &name :
            Utilities::split_string_list(p.selected_text, ','))

@@ -125,7 +125,12 @@ namespace coaxfit
       std::string low_by, high_by;     ///< the criteria ending it
     };
 
-    std::vector<unsigned int>        selected;   ///< joints, inside out
+    /**
+     * The joints of the box, inside out: the selected ones and those that
+     * keep an ISO fit (kept; one candidate, their band).
+     */
+    std::vector<unsigned int>        selected;
+    std::vector<bool>                kept;       ///< per entry of selected
     std::vector<std::vector<IsoFit>> candidates; ///< per selected joint
     std::vector<unsigned int>        n_fits;     ///< candidates before any cut
     std::vector<Combination>         ranked; ///< feasible, best first (<= 10)

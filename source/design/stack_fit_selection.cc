@@ -135,9 +135,15 @@ namespace coaxfit
               fits.push_back(f);
         std::stable_sort(fits.begin(), fits.end(), rank);
         n_fits.push_back(fits.size());
-        n_all *= std::max<double>(fits.size(), 1.);
         candidates.push_back(fits);
       }
+    for (const std::vector<IsoFit> &fits : candidates)
+      n_all *= std::max<double>(fits.size(), 1.);
+    n_all_combinations = n_all;
+    prune();
+    n_all = 1.;
+    for (const std::vector<IsoFit> &fits : candidates)
+      n_all *= std::max<double>(fits.size(), 1.);
     if (n_all > max_combinations())
       {
         const unsigned int keep = static_cast<unsigned int>(
@@ -152,7 +158,7 @@ namespace coaxfit
           + std::to_string(keep)
           + " by rank (preferred fits first, then the widest bands)");
       }
-    for (unsigned int j = 0; j < selected.size(); ++j)
+    for (unsigned int j = 0; j < selected.size() && conflict.empty(); ++j)
       if (candidates[j].empty())
         conflict = "the joint " + parameters.joint_name(selected[j])
                    + " has no ISO 286 interference fit at D "
@@ -199,6 +205,160 @@ namespace coaxfit
                   + joining_clearance_entry(
                     parameters.operation.joining_clearance_text, D)
                 <= opening;
+  }
+
+
+
+  void
+  StackFitSelection::prune()
+  {
+    const unsigned int J = parameters.n_joints(), J_s = selected.size();
+    const std::size_t  per_state = q0.size() / n_states;
+    // The affine criteria g(U) >= t: each joint's torque capacity, each
+    // chosen joint's mean pressure (> 0).
+    std::vector<std::pair<std::size_t, double>> affine;
+    std::vector<std::string>                    names;
+    for (unsigned int s = 0; s < n_states; ++s)
+      {
+        if (parameters.required_torque > 0.)
+          for (unsigned int k = 0; k < J; ++k)
+            {
+              affine.emplace_back(s * per_state + k,
+                                  parameters.required_torque
+                                    * parameters.slip_safety);
+              names.push_back("slip of " + parameters.joint_name(k) + " "
+                              + state_names[s]);
+            }
+        for (unsigned int i = 0; i < J_s; ++i)
+          if (!kept[i])
+            {
+              affine.emplace_back(s * per_state + J + selected[i], 0.);
+              names.push_back("contact of " + parameters.joint_name(selected[i])
+                              + " " + state_names[s]);
+            }
+      }
+    // Each ductile body's pairs of normal stresses at its points.
+    std::vector<std::pair<std::size_t, std::size_t>> yield_pairs;
+    std::vector<double>                              yield_limit;
+    std::vector<std::string>                         yield_names;
+    for (unsigned int s = 0; s < n_states; ++s)
+      {
+        std::size_t at = s * per_state + 2 * J;
+        for (unsigned int b = 0; b < n_points.size(); ++b)
+          {
+            const Material &m = parameters.materials[b];
+            const bool      judged
+              = m.kind != MaterialKind::brittle && m.yield_strength > 0.;
+            for (unsigned int p = 0; p < n_points[b]; ++p, at += 4)
+              if (judged)
+                for (const auto &pair : {std::make_pair(0u, 1u),
+                                         std::make_pair(1u, 2u),
+                                         std::make_pair(2u, 0u)})
+                  {
+                    yield_pairs.emplace_back(at + pair.first, at + pair.second);
+                    yield_limit.push_back(m.yield_strength
+                                          / parameters.yield_safety);
+                    yield_names.push_back("yield of " + parameters.bodies[b]
+                                          + " " + state_names[s]);
+                  }
+          }
+      }
+    bool removed = true;
+    while (removed)
+      {
+        removed = false;
+        // The envelope of each joint's candidates.
+        std::vector<double> low(J_s, infinite), high(J_s, -infinite);
+        for (unsigned int i = 0; i < J_s; ++i)
+          for (const IsoFit &f : candidates[i])
+            {
+              low[i]  = std::min(low[i], 1e-3 * f.min_interference());
+              high[i] = std::max(high[i], 1e-3 * f.max_interference());
+            }
+        for (unsigned int j = 0; j < J_s; ++j)
+          {
+            if (kept[j])
+              continue;
+            std::vector<IsoFit> left;
+            for (const IsoFit &f : candidates[j])
+              {
+                bool possible = true;
+                for (unsigned int c = 0; c < affine.size() && possible; ++c)
+                  {
+                    const std::size_t at = affine[c].first;
+                    // The most the others can give anywhere in theirs.
+                    double best = q0[at];
+                    for (unsigned int i = 0; i < J_s; ++i)
+                      if (i != j)
+                        best
+                          += std::max(slope[i][at] * (low[i] - U0[selected[i]]),
+                                      slope[i][at]
+                                        * (high[i] - U0[selected[i]]));
+                    for (const double U : {1e-3 * f.min_interference(),
+                                           1e-3 * f.max_interference()})
+                      if (!(best + slope[j][at] * (U - U0[selected[j]])
+                            > affine[c].second))
+                        {
+                          possible = false;
+                          if (candidates[j].size() == 1 || left.empty())
+                            last_pruned = names[c];
+                        }
+                  }
+                // Yield: vm >= |s_a - s_b| / sqrt(2) for any two normal
+                // stresses, whose difference is affine: its least
+                // magnitude over the others' envelope is exact.
+                for (unsigned int y = 0; y < yield_pairs.size() && possible;
+                     ++y)
+                  {
+                    const std::size_t at_a = yield_pairs[y].first,
+                                      at_b = yield_pairs[y].second;
+                    double lo = q0[at_a] - q0[at_b], hi = lo;
+                    for (unsigned int i = 0; i < J_s; ++i)
+                      if (i != j)
+                        {
+                          const double g = slope[i][at_a] - slope[i][at_b];
+                          const double x = g * (low[i] - U0[selected[i]]),
+                                       z = g * (high[i] - U0[selected[i]]);
+                          lo += std::min(x, z);
+                          hi += std::max(x, z);
+                        }
+                    for (const double U : {1e-3 * f.min_interference(),
+                                           1e-3 * f.max_interference()})
+                      {
+                        const double own = (slope[j][at_a] - slope[j][at_b])
+                                           * (U - U0[selected[j]]);
+                        const double least = lo + own > 0. ? lo + own :
+                                             hi + own < 0. ? -(hi + own) :
+                                                             0.;
+                        if (least / std::sqrt(2.) > yield_limit[y])
+                          {
+                            possible = false;
+                            if (left.empty())
+                              last_pruned = yield_names[y];
+                          }
+                      }
+                  }
+                if (possible)
+                  left.push_back(f);
+              }
+            if (left.size() < candidates[j].size())
+              {
+                removed = true;
+                n_pruned += candidates[j].size() - left.size();
+                candidates[j] = left;
+                if (left.empty())
+                  {
+                    conflict = "no fit of " + parameters.joint_name(selected[j])
+                               + " meets " + last_pruned
+                               + " at both ends of its band, whichever fits "
+                                 "the other joints have; lower Design/Required "
+                                 "torque or the safeties, or change the "
+                                 "materials or sections";
+                    return;
+                  }
+              }
+          }
+      }
   }
 
 
@@ -354,7 +514,11 @@ namespace coaxfit
         double       margin  = infinite;
         unsigned int which   = criterion_names.size() - 2;
         bool         touches = true;
-        for (unsigned int corner = 0; corner < corners && touches; ++corner)
+        for (unsigned int corner = 0;
+             corner < corners && touches
+             && (margin >= 1. || margin > closest.margin
+                 || closest.choice.empty());
+             ++corner)
           {
             q = q0;
             for (unsigned int j = 0; j < J_s; ++j)
@@ -420,7 +584,8 @@ namespace coaxfit
           names.push_back(candidates[j][closest.choice[j]].name);
         conflict
           = "no combination of the " + std::to_string(n_combinations)
-            + " judged carries the requirement in every state at every "
+            + " judged (of " + figure(n_all_combinations, 12)
+            + ") carries the requirement in every state at every "
               "corner of its bands: "
             + (std::isfinite(closest.margin) ?
                  "the closest, " + joined(names) + ", reaches "
@@ -663,9 +828,14 @@ namespace coaxfit
       out << (j ? ", " : "") << parameters.joint_name(selected[j])
           << (kept[j] ? " keeps its ISO fit" :
                         " from " + std::to_string(n_fits[j]) + " ISO 286 fits");
-    out << "; " << n_combinations << " combinations judged on "
-        << "the linear model (" << n_feasible << " carry the requirement), "
-        << n_solves << " FE states solved\n";
+    out << "; " << figure(n_all_combinations, 12) << " combinations, "
+        << n_combinations << " judged on the linear model";
+    if (n_pruned > 0)
+      out << " (" << n_pruned
+          << " candidates left out that fail slip, contact or yield with "
+             "any fits of the others)";
+    out << ": " << n_feasible << " carry the requirement; " << n_solves
+        << " FE states solved\n";
     if (!found())
       out << "  no fits found: " << conflict << '\n';
     else
@@ -726,9 +896,12 @@ namespace coaxfit
     for (unsigned int j = 0; j < selected.size(); ++j)
       out << (j ? ", " : "") << parameters.joint_name(selected[j]) << " ("
           << n_fits[j] << " candidates)";
-    out << " chosen together: " << n_combinations
-        << " combinations judged at every corner of their bands on the "
-           "linear model ("
+    out << " chosen together: " << figure(n_all_combinations, 12)
+        << " combinations, " << n_combinations
+        << " judged at every corner of their bands on the linear model ("
+        << n_pruned
+        << " candidates left out that fail slip, contact or yield with any "
+           "fits of the others; "
         << n_feasible << " carry the requirement), the first checked by FE, "
         << n_solves << " FE states solved in all.\n\n";
     if (!found())
@@ -808,7 +981,9 @@ namespace coaxfit
     std::ostringstream s;
     s << "{\"found\": " << (found() ? "true" : "false")
       << ", \"conflict\": " << quoted(conflict)
-      << ", \"combinations\": " << n_combinations
+      << ", \"combinations\": " << n_all_combinations
+      << ", \"judged\": " << n_combinations
+      << ", \"pruned_candidates\": " << n_pruned
       << ", \"feasible\": " << n_feasible
       << ", \"fe_states_solved\": " << n_solves << ", \"fits\": [";
     for (unsigned int j = 0; j < chosen.size(); ++j)

@@ -58,7 +58,8 @@ namespace coaxfit
    * checked by FE at every corner (up to 16; for more joints at each
    * criterion's worst corner) in every state; where a criterion fails there (a
    * contact zone that changed), the next is checked (at most
-   * max_checks()). Where there are more combinations than
+   * max_checks()). Before the search, prune() leaves out the candidates
+   * no combination can use; where there are still more combinations than
    * max_combinations(), each joint's list is cut to its best-ranked
    * candidates (a note says so).
    *
@@ -82,7 +83,7 @@ namespace coaxfit
     static constexpr unsigned int
     max_combinations()
     {
-      return 200000;
+      return 2000000;
     }
 
     /** The largest number of combinations checked by FE. */
@@ -135,7 +136,9 @@ namespace coaxfit
     std::vector<unsigned int>        n_fits;     ///< candidates before any cut
     std::vector<Combination>         ranked; ///< feasible, best first (<= 10)
     unsigned long                    n_combinations = 0; ///< judged
-    unsigned long                    n_feasible     = 0;
+    double       n_all_combinations = 0.; ///< of all candidates, before pruning
+    unsigned int n_pruned = 0; ///< candidates that cannot be part of any
+    unsigned long            n_feasible = 0;
     std::vector<IsoFit>      chosen; ///< per selected joint; empty: none
     std::vector<Check>       checks; ///< of the chosen fits
     std::vector<Band>        bands;  ///< per selected joint
@@ -213,6 +216,17 @@ namespace coaxfit
     std::vector<double>
     corner_of(const Combination &c, unsigned int corner) const;
 
+    /**
+     * Leave out the candidates that no combination can use: where an
+     * affine criterion (a joint's torque capacity, a chosen joint's mean
+     * pressure) fails at an end of the candidate's band even with the
+     * other joints anywhere in their candidates' envelope (the largest
+     * value an affine function takes over a box, at its corner). Repeated
+     * while the envelopes shrink. Exact: no feasible combination is lost.
+     */
+    void
+    prune();
+
     /** Judge every combination on the linear model; keep the best. */
     void
     search();
@@ -226,6 +240,7 @@ namespace coaxfit
     compute_bands();
 
     const StackParameters           &parameters;
+    std::string                      last_pruned; ///< what pruned last
     unsigned int                     n_states = 0;
     std::vector<std::string>         state_names;
     std::vector<unsigned int>        n_points; ///< stress points per body

@@ -12,7 +12,7 @@
 // 3. A second study into the same directory replaces the first.
 // 4. Refused in one line, exit 1, nothing written: the bodies swept,
 //    Output/Directory swept, an entry the stack does not have, a stack
-//    among several files.
+//    among files of two bodies.
 // 5. --print-parameters FILE.prm lists the stack's own entries.
 
 #include <coaxfit/design/compound_cylinders.h>
@@ -243,7 +243,12 @@ main()
   refused("no such entry",
           "--sweep 'Fit/Shaft-Hub/Diametral interference=0.1,0.2' "
           "three_rings.prm");
-  refused("a stack among several files", "three_rings.prm three_rings.prm");
+  std::filesystem::copy_file(std::string(COAXFIT_SOURCE_DIR)
+                               + "/prm/default.prm",
+                             "two_bodies.prm",
+                             std::filesystem::copy_options::overwrite_existing);
+  refused("a stack among files of two bodies",
+          "three_rings.prm two_bodies.prm");
 
   // Part 5: the stack's entries listed.
   const std::string list = std::string(coaxfit_executable)

@@ -2,6 +2,7 @@
 #include <coaxfit/app/parameter_sweep.h>
 #include <coaxfit/app/plastic_fit.h>
 #include <coaxfit/app/run_guard.h>
+#include <coaxfit/app/stack_batch.h>
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/app/stack_sweep.h>
 #include <coaxfit/app/usage.h>
@@ -177,6 +178,74 @@ namespace
   }
 
   /**
+   * The table of several files (--table, else cases.csv beside the first
+   * readable case's output directory), checked before any case runs; and
+   * the cases' directories: two that are one or lie in each other would
+   * replace each other's results, so the whole batch is refused.
+   */
+  std::string
+  batch_table(const CommandLine              &line,
+              const std::vector<Target>      &targets,
+              const std::vector<std::string> &inputs)
+  {
+    using coaxfit::InputError;
+    for (unsigned int i = 0; i < targets.size(); ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        {
+          const Target &a = targets[i], &b = targets[j];
+          if (is_within(a.resolved, b.resolved)
+              || is_within(b.resolved, a.resolved))
+            throw InputError(
+              "parameter Output/Directory = " + a.given + " of " + a.file
+              + (a.resolved == b.resolved          ? " is also that of " :
+                 is_within(a.resolved, b.resolved) ? " lies in that of " :
+                                                     " contains that of ")
+              + b.file + " (" + b.given
+              + "); each case needs a directory of its own, none inside "
+                "another's; nothing was run");
+        }
+    std::string table = line.table;
+    if (table.empty() && !targets.empty())
+      {
+        const std::filesystem::path first(
+          coaxfit::normalized_directory(targets.front().given));
+        table = (first.has_parent_path() ? first.parent_path() / "cases.csv" :
+                                           std::filesystem::path("cases.csv"))
+                  .string();
+      }
+    if (!table.empty())
+      check_table(table, inputs, targets);
+    return table;
+  }
+
+
+
+  /** Write the table @p text of several files to @p table (if any). */
+  void
+  write_table(const std::string &table, const std::string &text)
+  {
+    if (table.empty())
+      return;
+    std::error_code error;
+    std::filesystem::create_directories(
+      std::filesystem::path(table).parent_path(), error);
+    try
+      {
+        coaxfit::write_file_atomically(table, text);
+      }
+    catch (const std::exception &e)
+      {
+        throw coaxfit::ResourceError(
+          std::string(e.what())
+          + "; the table was not written, but the cases' own results "
+            "are in place in their output directories");
+      }
+    std::cout << "  table in " << table << std::endl;
+  }
+
+
+
+  /**
    * Several parameter files: one case each, run by a CaseBatch; the table
    * printed and written; the batch's exit code.
    */
@@ -208,63 +277,54 @@ namespace
             c.input_error = e.what();
           }
       }
-    // Two cases whose directories are one or lie in each other would
-    // replace each other's results: the whole batch is refused before any
-    // case runs.
-    for (unsigned int i = 0; i < targets.size(); ++i)
-      for (unsigned int j = 0; j < i; ++j)
-        {
-          const Target &a = targets[i], &b = targets[j];
-          if (is_within(a.resolved, b.resolved)
-              || is_within(b.resolved, a.resolved))
-            throw InputError(
-              "parameter Output/Directory = " + a.given + " of " + a.file
-              + (a.resolved == b.resolved          ? " is also that of " :
-                 is_within(a.resolved, b.resolved) ? " lies in that of " :
-                                                     " contains that of ")
-              + b.file + " (" + b.given
-              + "); each case needs a directory of its own, none inside "
-                "another's; nothing was run");
-        }
-    std::string table = line.table;
-    if (table.empty())
-      for (const BatchCase &c : cases)
-        if (c.parameters)
-          {
-            const std::filesystem::path first(
-              normalized_directory(c.parameters->output_directory()));
-            table
-              = (first.has_parent_path() ? first.parent_path() / "cases.csv" :
-                                           std::filesystem::path("cases.csv"))
-                  .string();
-            break;
-          }
-    if (!table.empty())
-      check_table(table, inputs, targets);
-
+    const std::string              table = batch_table(line, targets, inputs);
     const std::vector<CaseOutcome> outcomes
       = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
     std::cout << "\ncoaxfit: " << cases.size() << " cases\n";
     CaseBatch::print_table(std::cout, cases, outcomes);
-    if (!table.empty())
+    write_table(table, CaseBatch::table_csv(cases, outcomes));
+    return CaseBatch::exit_code(outcomes);
+  }
+
+
+
+  /**
+   * Several stack files (Assembly/Bodies): one case each, run one after
+   * the other by a StackBatch; the table printed and written; the batch's
+   * exit code.
+   */
+  int
+  run_stack_files(const CommandLine &line)
+  {
+    using namespace coaxfit;
+    std::vector<StackCase>   cases(line.filenames.size());
+    std::vector<Target>      targets;
+    std::vector<std::string> inputs = line.filenames;
+    for (unsigned int i = 0; i < cases.size(); ++i)
       {
-        std::error_code error;
-        std::filesystem::create_directories(
-          std::filesystem::path(table).parent_path(), error);
+        StackCase &c = cases[i];
+        c.label      = line.filenames[i];
         try
           {
-            write_file_atomically(table, CaseBatch::table_csv(cases, outcomes));
+            auto p = std::make_shared<StackParameters>(
+              read_stack_parameters(line.filenames[i], line.overrides));
+            targets.push_back({resolved(p->output_directory()),
+                               p->output_directory(),
+                               line.filenames[i]});
+            c.parameters = p;
           }
-        catch (const std::exception &e)
+        catch (const InputError &e)
           {
-            throw ResourceError(
-              std::string(e.what())
-              + "; the table was not written, but the cases' own results "
-                "are in place in their output directories");
+            c.input_error = e.what();
           }
-        std::cout << "  table in " << table << std::endl;
       }
-    return CaseBatch::exit_code(outcomes);
+    const std::string table = batch_table(line, targets, inputs);
+    const std::vector<StackCaseOutcome> outcomes
+      = StackBatch(!line.quiet, std::cout, std::cerr).run(cases);
+    std::cout << "\ncoaxfit: " << cases.size() << " stack cases\n";
+    StackBatch::print_table(std::cout, cases, outcomes);
+    write_table(table, StackBatch::table_csv(cases, outcomes));
+    return StackBatch::exit_code(outcomes);
   }
 
 
@@ -375,14 +435,38 @@ namespace
         // in a --sweep.
         const std::vector<std::string> bodies
           = assembly_bodies(line.filenames[0], line.overrides);
-        for (std::size_t i = 0; i < line.filenames.size(); ++i)
-          if (line.filenames.size() > 1
-              && !assembly_bodies(line.filenames[i], line.overrides).empty())
-            throw InputError(
-              "parameter file '" + line.filenames[i]
-              + "' names several bodies (Assembly/Bodies): such a file runs "
-                "on its own or in a --sweep in this version (not one of "
-                "several files)");
+        // Several files: all stacks, or none (their tables differ).
+        if (line.filenames.size() > 1)
+          {
+            std::vector<std::string> stacks, plain;
+            for (const std::string &file : line.filenames)
+              {
+                bool stack = false;
+                try
+                  {
+                    stack = !assembly_bodies(file, line.overrides).empty();
+                  }
+                catch (const InputError &)
+                  {
+                    // A file that cannot be read is its case's to report.
+                    stack = !bodies.empty();
+                  }
+                (stack ? stacks : plain).push_back(file);
+              }
+            if (!stacks.empty() && !plain.empty())
+              throw InputError(
+                "parameter file '" + stacks.front()
+                + "' names several bodies (Assembly/Bodies) and '"
+                + plain.front()
+                + "' does not: stacks and files of two bodies run in separate "
+                  "commands (their tables differ); nothing was run");
+            if (!stacks.empty())
+              {
+                const int code = run_stack_files(line);
+                check_standard_output();
+                return code;
+              }
+          }
         if (!bodies.empty() && line.sweep)
           {
             const int code = StackSweep(line.filenames[0],

@@ -303,6 +303,13 @@ namespace coaxfit
     void
     select_fits(std::ostream &out);
 
+    /** The parameters run (with a selection's chosen fits). */
+    const StackParameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
+
     /** The selection of Design/Mode = select (null: check mode). */
     const StackFitSelection *
     get_selection() const

@@ -1,0 +1,184 @@
+// Several stack files in one command (`coaxfit A.prm B.prm ...`): each file
+// runs as it would on its own, into its own Output/Directory, and a case
+// that fails ends alone. The test runs three_rings.prm, gear_rim.prm, a
+// file with an unknown body's subsection (bad input) and three_rings.prm
+// stopped after two coupling steps (not converged) together, and checks
+// 1. the batch's exit code (the worst: 2), the table's rows (one per joint
+//    of each case, one for a case without figures) and each row's status;
+// 2. each converged case's mean pressures and steps against the same file
+//    run on its own (identical: the same process runs it the same way);
+// 3. the directories: written for every case but the bad one;
+// 4. --table FILE.csv, and refusals before any case runs (exit 1, one
+//    line, nothing written): stacks mixed with a file of two bodies, two
+//    cases with one output directory.
+
+#include "run_executable.h"
+#include "run_summary.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+using namespace coaxfit_test;
+
+namespace
+{
+  const std::string examples
+    = std::string(COAXFIT_SOURCE_DIR) + "/prm/examples/";
+
+  /** The rows of a CSV file (the header first), split at commas. */
+  std::vector<std::vector<std::string>>
+  read_csv(const std::string &file)
+  {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream                         in(file);
+    std::string                           line;
+    while (std::getline(in, line))
+      {
+        std::vector<std::string> fields;
+        std::istringstream       s(line);
+        std::string              field;
+        while (std::getline(s, field, ','))
+          fields.push_back(field);
+        rows.push_back(fields);
+      }
+    return rows;
+  }
+
+  /** A copy of @p example in @p dir with @p extra appended. */
+  std::string
+  variant(const std::string &dir,
+          const std::string &name,
+          const std::string &example,
+          const std::string &extra)
+  {
+    std::ifstream     in(examples + example);
+    const std::string text((std::istreambuf_iterator<char>(in)),
+                           std::istreambuf_iterator<char>());
+    const std::string file = dir + "/" + name + ".prm";
+    std::ofstream(file) << text << extra;
+    return file;
+  }
+} // namespace
+
+int
+main()
+{
+  namespace fs           = std::filesystem;
+  const std::string base = fs::current_path().string();
+  const std::string in   = base + "/in";
+  fs::remove_all(in);
+  fs::create_directories(in);
+  const std::string out = base + "/out";
+  fs::remove_all(out);
+
+  // Each case into out/<name>.
+  const auto into = [&](const std::string &name) {
+    return "subsection Output\n  set Directory = " + out + "/" + name
+           + "\n  set Write vtu = false\n  set Write plots = false\n"
+             "  set Print timing = false\nend\n";
+  };
+  const std::string rings
+    = variant(in, "rings", "three_rings.prm", into("rings"));
+  const std::string gear = variant(in, "gear", "gear_rim.prm", into("gear"));
+  const std::string bad  = variant(in,
+                                  "bad",
+                                  "three_rings.prm",
+                                  "subsection Material\n  subsection Collar\n"
+                                   "    set E = 1\n  end\nend\n"
+                                    + into("bad"));
+  const std::string stopped
+    = variant(in,
+              "stopped",
+              "three_rings.prm",
+              "subsection Coupling\n  set Max steps = 2\nend\n"
+                + into("stopped"));
+
+  // 1. The batch.
+  const RunResult r = run_command(
+    std::string("timeout 120 ") + coaxfit_executable + " --quiet " + rings + " "
+    + gear + " " + bad + " " + stopped + " 2>&1 >/dev/null");
+  std::cout << "1. four stack files: exit code " << r.exit_code << ", "
+            << r.lines << " lines on standard error\n";
+  const auto  rows = read_csv(out + "/cases.csv");
+  std::string header;
+  for (const std::string &f :
+       rows.empty() ? std::vector<std::string>() : rows[0])
+    header += f + ' ';
+  std::cout << "  out/cases.csv: " << (rows.empty() ? 0 : rows.size() - 1)
+            << " rows; header " << header << '\n';
+  std::map<std::string, std::vector<std::string>> by_joint;
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    {
+      const std::string name = fs::path(rows[i][0]).stem().string();
+      std::cout << "  " << name << ": exit " << rows[i][1] << ", " << rows[i][2]
+                << ", verdict " << (rows[i][3].empty() ? "-" : rows[i][3])
+                << ", joint " << (rows[i][6].empty() ? "-" : rows[i][6])
+                << '\n';
+      if (!rows[i][6].empty())
+        by_joint[name + " " + rows[i][6]] = rows[i];
+    }
+
+  // 2. Each converged case against the file run on its own.
+  for (const auto &[name, file] :
+       std::vector<std::pair<std::string, std::string>>{{"rings", rings},
+                                                        {"gear", gear}})
+    {
+      const std::string alone = base + "/alone_" + name;
+      fs::remove_all(alone);
+      const RunResult      single = run_coaxfit(alone, "--quiet " + file);
+      const nlohmann::json j      = read_summary(alone);
+      std::cout << "2. " << name << " alone: exit " << single.exit_code;
+      for (const auto &joint : j["joints"])
+        {
+          const auto &row
+            = by_joint[name + " " + joint["name"].get<std::string>()];
+          const double mean = joint["pressure"]["mean"].get<double>();
+          std::cout << "; " << joint["name"].get<std::string>() << " mean "
+                    << std::setprecision(7) << mean << " MPa, the batch's "
+                    << agreement(std::stod(row[9]), mean, 1e-9);
+        }
+      std::cout << "; steps " << j["coupling"]["steps"] << '\n';
+    }
+
+  // 3. The directories.
+  std::cout << "3. written:";
+  for (const std::string name : {"rings", "gear", "bad", "stopped"})
+    std::cout << ' ' << name << ' '
+              << (fs::exists(out + "/" + name + "/summary.json") ? "yes" :
+                                                                   "no");
+  std::cout << '\n';
+
+  // 4. --table, and refusals.
+  {
+    const std::string table = base + "/table/mine.csv";
+    fs::remove_all(base + "/table");
+    const RunResult t = run_command(
+      std::string("timeout 120 ") + coaxfit_executable + " --quiet --table "
+      + table + " " + rings + " " + gear + " 2>&1 >/dev/null");
+    std::cout << "4. --table: exit code " << t.exit_code << ", "
+              << read_csv(table).size() - 1 << " rows\n";
+  }
+  const auto refused = [&](const std::string &what, const std::string &files) {
+    fs::remove_all(out);
+    const RunResult x
+      = run_command(std::string("timeout 60 ") + coaxfit_executable
+                    + " --quiet " + files + " 2>&1 >/dev/null");
+    std::string message = x.message;
+    for (const auto &[path, name] :
+         {std::make_pair(base, std::string("DIR")),
+          std::make_pair(std::string(COAXFIT_SOURCE_DIR), std::string("SRC"))})
+      for (std::size_t at; (at = message.find(path)) != std::string::npos;)
+        message.replace(at, path.size(), name);
+    std::cout << "  " << what << ": exit code " << x.exit_code << ", "
+              << x.lines << " line: " << gist(message, 16)
+              << "; written: " << (fs::exists(out) ? "yes" : "nothing") << '\n';
+  };
+  refused("a stack and a file of two bodies",
+          rings + " " + examples + "steel_hub_H7s6.prm");
+  const std::string twin = variant(in, "twin", "gear_rim.prm", into("rings"));
+  refused("two cases, one directory", rings + " " + twin);
+  return 0;
+}

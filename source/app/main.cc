@@ -17,6 +17,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -304,6 +305,11 @@ namespace
       {
         StackCase &c = cases[i];
         c.label      = line.filenames[i];
+        if (!std::ifstream(c.label) || std::filesystem::is_directory(c.label))
+          {
+            c.input_error = "cannot read parameter file '" + c.label + "'";
+            continue;
+          }
         try
           {
             auto p = std::make_shared<StackParameters>(
@@ -433,25 +439,23 @@ namespace
         const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
         // A file of several bodies (Assembly/Bodies) runs on its own or
         // in a --sweep.
-        const std::vector<std::string> bodies
-          = assembly_bodies(line.filenames[0], line.overrides);
         // Several files: all stacks, or none (their tables differ).
         if (line.filenames.size() > 1)
           {
             std::vector<std::string> stacks, plain;
             for (const std::string &file : line.filenames)
               {
-                bool stack = false;
+                // A file that cannot be read is its case's to report.
+                if (!std::ifstream(file) || std::filesystem::is_directory(file))
+                  continue;
                 try
                   {
-                    stack = !assembly_bodies(file, line.overrides).empty();
+                    (assembly_bodies(file, line.overrides).empty() ? plain :
+                                                                     stacks)
+                      .push_back(file);
                   }
                 catch (const InputError &)
-                  {
-                    // A file that cannot be read is its case's to report.
-                    stack = !bodies.empty();
-                  }
-                (stack ? stacks : plain).push_back(file);
+                  {}
               }
             if (!stacks.empty() && !plain.empty())
               throw InputError(
@@ -467,6 +471,10 @@ namespace
                 return code;
               }
           }
+        const std::vector<std::string> bodies
+          = line.filenames.size() == 1 ?
+              assembly_bodies(line.filenames[0], line.overrides) :
+              std::vector<std::string>();
         if (!bodies.empty() && line.sweep)
           {
             const int code = StackSweep(line.filenames[0],

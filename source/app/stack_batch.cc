@@ -63,7 +63,7 @@ namespace coaxfit
       {
         const StackCase  &c = cases[i];
         StackCaseOutcome &o = outcomes[i];
-        if (i > 0)
+        if (i > 0 && verbose)
           out << '\n';
         if (!c.parameters)
           {
@@ -75,24 +75,40 @@ namespace coaxfit
           }
         const auto         start = std::chrono::steady_clock::now();
         std::ostringstream errors;
-        o.exit_code = exit_code_of(
+        // --quiet: only the table.
+        std::ostringstream discarded;
+        std::ostream      &case_out = verbose ? out : discarded;
+        o.exit_code                 = exit_code_of(
           [&]() {
-            StackFit   fit(*c.parameters);
-            const int  code      = fit.run(out, verbose);
-            const auto selection = fit.get_selection();
-            o.joints             = fit.joint_figures();
-            o.bodies             = fit.body_figures();
-            o.steps              = fit.n_steps();
-            for (const JointFit &f : fit.get_parameters().fits)
-              o.joint_fits.push_back(f.source);
-            if (!o.joints.empty() || selection)
-              o.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
-            if (selection && selection->found())
-              for (const IsoFit &f : selection->chosen)
-                o.fits += (o.fits.empty() ? "" : " + ") + f.name;
+            StackFit fit(*c.parameters);
+            // What the case computed, also if writing it failed.
+            const auto record = [&]() {
+              const auto selection = fit.get_selection();
+              o.joints             = fit.joint_figures();
+              o.bodies             = fit.body_figures();
+              o.steps              = fit.n_steps();
+              for (const JointFit &f : fit.get_parameters().fits)
+                o.joint_fits.push_back(f.source);
+              if (!o.joints.empty() || selection)
+                o.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
+              if (selection && selection->found())
+                for (const IsoFit &f : selection->chosen)
+                  o.fits += (o.fits.empty() ? "" : " + ") + f.name;
+            };
+            int code = 0;
+            try
+              {
+                code = fit.run(case_out, verbose);
+              }
+            catch (...)
+              {
+                record();
+                throw;
+              }
+            record();
             if (code == 2)
               errors << "coaxfit: the staggered process of the stack did "
-                        "not converge in Coupling/Max steps = "
+                                        "not converge in Coupling/Max steps = "
                      << c.parameters->max_steps
                      << " steps; raise it or set Solver/Method = monolithic\n";
             return code;

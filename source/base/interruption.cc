@@ -97,8 +97,11 @@ namespace coaxfit
     void
     set_staging(const std::string &staging, const std::string &target)
     {
+      // A run begins (or ends): nothing of it is committed yet (a batch
+      // runs several, one after the other).
       staging_directory = staging;
       target_directory  = target;
+      committed         = false;
     }
 
 

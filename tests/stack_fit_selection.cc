@@ -50,6 +50,8 @@ namespace
   const double slip_safety   = 1.5;
   const double yield_safety  = 1.25;
   const double hub_shrinkage = 23e-6 * 25. * 90.; // mm, in service
+  /** Design/Running clearance of a shaft given a clearance (mm); 0: none. */
+  double running = 0.;
 
   /** The scene, selecting with @p torque (N m) and @p extra entries. */
   std::string
@@ -100,12 +102,19 @@ namespace
         const coaxfit::CompoundCylinders cc(rings, U_state, 0., 0., true);
         for (unsigned int k = 0; k < 2; ++k)
           {
+            // A running fit: its diametral gap against the clearance.
+            if (U[k] < 0.)
+              {
+                margin = std::min(margin, 2. * cc.gap(k) / running);
+                continue;
+              }
             const double D = rings[k].outer_diameter;
             const double T
               = mu * cc.pressure(k) * M_PI * D * D * length / 2. / 1000.;
             if (!(cc.pressure(k) > 0.))
               return -std::numeric_limits<double>::infinity();
-            margin = std::min(margin, T / (torque * slip_safety));
+            if (torque > 0.)
+              margin = std::min(margin, T / (torque * slip_safety));
           }
         for (unsigned int b = 0; b < 3; ++b)
           for (const double d :
@@ -403,6 +412,42 @@ main()
               << j["selection"]["feasible"].get<unsigned long>()
               << ", closed form " << ranking.size() << "; found "
               << j["selection"]["found"] << '\n';
+  }
+
+  // 2c. The shaft runs in the sleeve with 0.06 mm clearance, which must
+  // keep 0.01 mm (Design/Running clearance) while Sleeve-Hub is chosen:
+  // the sleeve's bore closes as the hub squeezes it.
+  {
+    std::cout << "2c. Shaft-Sleeve a running fit (-0.06 mm), Design/Running "
+                 "clearance 0.01 mm, no torque\n";
+    const std::string dir  = base + "/running";
+    std::string       text = scene(0., "  set Running clearance = 0.01\n");
+    const std::string from = "Diametral interference = 0.04";
+    text.replace(text.find(from),
+                 from.size(),
+                 "Diametral interference = -0.06");
+    const nlohmann::json j      = run_scene(dir, write_scene(dir, text));
+    running                     = 0.01;
+    unsigned long             n = 0;
+    const std::vector<Choice> ranking
+      = closed_form_ranking({false, true}, {-0.06, 0.}, 0., n);
+    const std::string first
+      = ranking.empty() ? "none" : ranking[0].fits[0].name;
+    std::cout << "  feasible: run "
+              << j["selection"]["feasible"].get<unsigned long>()
+              << ", closed form " << ranking.size()
+              << "; chosen: " << fits_of(j)
+              << "; the closed form's first: " << first
+              << (fits_of(j) == first ? " (the same)" : " (DIFFERS)") << '\n';
+    compare_checks(j, {false, true}, {-0.06, 0.}, 0.);
+    running           = 0.;
+    const auto &joint = j["selection"]["joints"][0];
+    std::cout << "  allowed up to " << std::setprecision(4)
+              << joint["allowed_max"].get<double>() << " mm ("
+              << joint["allowed_max_by"].get<std::string>() << ")"
+              << std::setprecision(6) << "; the run's verdict "
+              << j["verdict"]["ok"] << ", running clearance left "
+              << j["joints"][0]["contact"]["gap_min"].get<double>() << " mm\n";
   }
 
   // 3. A torque no fit carries.

@@ -855,6 +855,19 @@ namespace coaxfit
             figures.p_mean.push_back(f.p_mean);
             figures.touches.push_back(f.separated_points
                                       < joints[k].n_points());
+            // The diametral gap at each point (about 0 in contact).
+            const StackLayout    layout(stack_joints);
+            const Vector<double> u_in
+              = bodies[k]->interface_radial_values(field[k]);
+            const Vector<double> u_out
+              = bodies[k + 1]->interface_radial_values(field[k + 1]);
+            std::vector<double> gap;
+            for (unsigned int i = 0; i < joints[k].n_points(); ++i)
+              gap.push_back(2.
+                            * (u_out[layout.offset(k + 1, k) + i]
+                               - u_in[layout.offset(k, k) + i]
+                               - joints[k].interference));
+            figures.gap.push_back(gap);
           }
         for (unsigned int b = 0; b < bodies.size(); ++b)
           {

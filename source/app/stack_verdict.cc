@@ -42,6 +42,17 @@ namespace coaxfit
                        + " mm, after the smoothing loss U_w "
                        + number(f.effective_interference, 6) + " mm)" :
                      std::string()));
+            // A running fit keeps Design/Running clearance.
+            if (parameters.running_clearance > 0.
+                && f.diametral_interference < 0.
+                && f.gap_min < parameters.running_clearance)
+              failed.push_back(
+                "running clearance of the joint " + f.name + state.when + ": "
+                + (f.closed || f.gap_min <= 0. ?
+                     std::string("closed") :
+                     number(f.gap_min, 6) + " mm left")
+                + ", less than " + number(parameters.running_clearance, 6)
+                + " mm (Design/Running clearance)");
             if (parameters.required_torque > 0.
                 && f.slip_safety < parameters.slip_safety)
               failed.push_back(

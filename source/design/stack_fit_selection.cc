@@ -30,6 +30,8 @@ namespace coaxfit
     {
       if (!std::isfinite(x))
         return x > 0 ? "none" : "-";
+      if (std::abs(x) < 1e-12)
+        return "0";
       std::ostringstream s;
       s << std::setprecision(digits) << x;
       return s.str();
@@ -62,28 +64,90 @@ namespace coaxfit
           kept.push_back(!parameters.selected[k]);
         }
 
-    // The linear model: each state at U_0 and with each selected joint's
-    // interference raised by h.
+    // The joints given a clearance that must keep Design/Running
+    // clearance (a bushing's running fit).
+    if (parameters.running_clearance > 0.)
+      for (unsigned int k = 0; k < J; ++k)
+        if (!parameters.selected[k]
+            && parameters.fits[k].nominal_interference < 0.)
+          running.push_back(k);
+
+    // The linear model holds while the contact zones stay: U_0 is sought
+    // where every selected joint touches and every running fit is open in
+    // every state (each selected joint at 1, 1/2, 2, 1/4, 4, 1/8 times
+    // 0.001 D beyond its smoothing loss), and each slope is taken by a
+    // step of a quarter of that, down or, where the zones change, up.
+    const auto regime = [&](const std::vector<StackStateFigures> &st) {
+      std::vector<bool> r;
+      for (const StackStateFigures &state : st)
+        {
+          for (const unsigned int k : selected)
+            r.push_back(state.p_mean[k] > 0.);
+          for (const unsigned int k : running)
+            for (const double g : state.gap[k])
+              r.push_back(g > 0.);
+        }
+      return r;
+    };
     U0.resize(J);
-    for (unsigned int k = 0; k < J; ++k)
-      U0[k] = parameters.selected[k] ? parameters.fits[k].smoothing_loss
-                                         + 1e-3 * parameters.joint_diameter(k) :
-                                       parameters.fits[k].nominal_interference;
-    const std::vector<StackStateFigures> base = evaluate(U0);
-    n_states                                  = base.size();
-    n_solves += n_states;
+    std::vector<StackStateFigures> base;
+    bool                           found_regime = false;
+    for (const double beyond : {1., 0.5, 2., 0.25, 4., 0.125})
+      {
+        for (unsigned int k = 0; k < J; ++k)
+          U0[k] = parameters.selected[k] ?
+                    parameters.fits[k].smoothing_loss
+                      + beyond * 1e-3 * parameters.joint_diameter(k) :
+                    parameters.fits[k].nominal_interference;
+        base = evaluate(U0);
+        n_solves += base.size();
+        const std::vector<bool> r = regime(base);
+        if (std::find(r.begin(), r.end(), false) == r.end())
+          {
+            found_regime = true;
+            break;
+          }
+      }
+    if (!found_regime)
+      {
+        for (unsigned int k = 0; k < J; ++k)
+          U0[k] = parameters.selected[k] ?
+                    parameters.fits[k].smoothing_loss
+                      + 1e-3 * parameters.joint_diameter(k) :
+                    parameters.fits[k].nominal_interference;
+        base = evaluate(U0);
+        n_solves += base.size();
+        notes.push_back(
+          "no interferences from 1/8 to 4 times 0.001 D keep every selected "
+          "joint in contact and every running fit open in every state: the "
+          "linear model is taken where a contact zone differs, so it may "
+          "leave out fits that would do; the FE check judges the chosen "
+          "ones");
+      }
+    n_states = base.size();
     for (const StackStateFigures &s : base)
       state_names.push_back(s.state);
     for (const auto &points : base[0].stress)
       n_points.push_back(points.size());
-    q0 = flatten(base);
+    for (const unsigned int k : running)
+      n_gap_points.push_back(base[0].gap[k].size());
+    q0                                  = flatten(base);
+    const std::vector<bool> base_regime = regime(base);
     for (const unsigned int k : selected)
       {
         std::vector<double> U = U0;
-        const double        h = 0.5e-3 * parameters.joint_diameter(k);
+        double h = -0.25 * (U0[k] - parameters.fits[k].smoothing_loss);
         U[k] += h;
-        const std::vector<double> q = flatten(evaluate(U));
+        std::vector<StackStateFigures> step = evaluate(U);
         n_solves += n_states;
+        if (regime(step) != base_regime)
+          {
+            h    = -h;
+            U[k] = U0[k] + h;
+            step = evaluate(U);
+            n_solves += n_states;
+          }
+        const std::vector<double> q = flatten(step);
         slope.emplace_back(q.size());
         for (unsigned int i = 0; i < q.size(); ++i)
           slope.back()[i] = (q[i] - q0[i]) / h;
@@ -105,6 +169,10 @@ namespace coaxfit
                 (m.kind == MaterialKind::brittle ? "fracture of " : "yield of ")
                 + parameters.bodies[b] + " " + state_names[s]);
           }
+        for (const unsigned int k : running)
+          criterion_names.push_back("running clearance of "
+                                    + parameters.joint_name(k) + " "
+                                    + state_names[s]);
       }
     criterion_names.push_back("no requirement (no Design/Required torque, "
                               "no strength of a body)");
@@ -235,6 +303,18 @@ namespace coaxfit
               affine.emplace_back(s * per_state + J + selected[i], 0.);
               names.push_back("contact of " + parameters.joint_name(selected[i])
                               + " " + state_names[s]);
+            }
+        // A running fit's gap at each point, after the bodies' stresses.
+        std::size_t at = s * per_state + 2 * J;
+        for (const unsigned int n : n_points)
+          at += 4 * n;
+        for (unsigned int r = 0; r < running.size(); ++r)
+          for (unsigned int i = 0; i < n_gap_points[r]; ++i, ++at)
+            {
+              affine.emplace_back(at, parameters.running_clearance);
+              names.push_back("running clearance of "
+                              + parameters.joint_name(running[r]) + " "
+                              + state_names[s]);
             }
       }
     // Each ductile body's pairs of normal stresses at its points.
@@ -379,6 +459,8 @@ namespace coaxfit
             for (const Axisymmetric::Vector4 &sigma : s.stress[b])
               q.insert(q.end(), sigma.begin(), sigma.end());
           }
+        for (const unsigned int k : running)
+          q.insert(q.end(), s.gap[k].begin(), s.gap[k].end());
       }
     if (!q0.empty() && q.size() != q0.size())
       throw std::logic_error("the figures of a stack's states changed size");
@@ -433,6 +515,14 @@ namespace coaxfit
                         m.yield_strength
                           / (std::sqrt(largest) * parameters.yield_safety) :
                         infinite);
+          }
+        // A running fit's least gap over its points.
+        for (unsigned int r = 0; r < running.size(); ++r)
+          {
+            double least = infinite;
+            for (unsigned int i = 0; i < n_gap_points[r]; ++i, ++at)
+              least = std::min(least, q[at]);
+            improve(least / parameters.running_clearance);
           }
         o = at;
       }
@@ -812,6 +902,11 @@ namespace coaxfit
                         }
                     name += judged ? 1 : 0;
                   }
+                for (unsigned int r = 0; r < running.size(); ++r, ++name)
+                  for (unsigned int i = 0; i < n_gap_points[r]; ++i, ++at)
+                    linear_bound(a[at] - parameters.running_clearance,
+                                 b[at],
+                                 criterion_names[name]);
               }
           }
         bands.push_back(band);
@@ -832,8 +927,8 @@ namespace coaxfit
         << n_combinations << " judged on the linear model";
     if (n_pruned > 0)
       out << " (" << n_pruned
-          << " candidates left out that fail slip, contact or yield with "
-             "any fits of the others)";
+          << " candidates left out that fail a criterion whatever fits the "
+             "others have)";
     out << ": " << n_feasible << " carry the requirement; " << n_solves
         << " FE states solved\n";
     if (!found())
@@ -900,8 +995,8 @@ namespace coaxfit
         << " combinations, " << n_combinations
         << " judged at every corner of their bands on the linear model ("
         << n_pruned
-        << " candidates left out that fail slip, contact or yield with any "
-           "fits of the others; "
+        << " candidates left out that fail a criterion whatever fits the "
+           "others have; "
         << n_feasible << " carry the requirement), the first checked by FE, "
         << n_solves << " FE states solved in all.\n\n";
     if (!found())

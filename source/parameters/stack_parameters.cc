@@ -615,6 +615,15 @@ namespace coaxfit
                       "have, for the verdict. Allowed: 1 to 100.",
                       Patterns::Double(1., 100.));
     prm.add_parameter(
+      "Running clearance",
+      running_clearance,
+      "Diametral clearance in mm that every joint given a clearance "
+      "(Diametral interference < 0: a running fit, such as a bushing's "
+      "shaft) must keep at each of its points, at assembly and with the "
+      "loads of Operation, for the verdict and a selection (the bushing's "
+      "bore closes as it is pressed in). 0: not judged. Allowed: 0 to 10.",
+      Patterns::Double(0., 10.));
+    prm.add_parameter(
       "Mode",
       design_mode,
       "check: the fits given (Fit) are checked. select: the ISO 286 fits "
@@ -884,6 +893,18 @@ namespace coaxfit
     bool iso = false;
     for (const JointFit &fit : fits)
       iso = iso || !fit.iso_fit.empty();
+    if (running_clearance > 0.)
+      {
+        bool any = false;
+        for (const JointFit &fit : fits)
+          any = any || fit.nominal_interference < 0.;
+        if (!any)
+          throw InputError("parameter Design/Running clearance = "
+                           + number(running_clearance)
+                           + ": no joint is given a clearance (a Diametral "
+                             "interference < 0) that could keep it; allowed "
+                             "is 0 here");
+      }
     if (select_mode())
       {
         if (std::find(selected.begin(), selected.end(), true) == selected.end())

@@ -26,6 +26,11 @@ namespace coaxfit
     std::vector<double>                             p_mean;  ///< MPa, per joint
     std::vector<bool>                               touches; ///< per joint
     std::vector<std::vector<Axisymmetric::Vector4>> stress;  ///< per body
+    /**
+     * Per joint, at each point: the diametral gap the bodies leave (mm;
+     * about 0 where in contact), for Design/Running clearance.
+     */
+    std::vector<std::vector<double>> gap;
   };
 
   /**
@@ -239,11 +244,14 @@ namespace coaxfit
     void
     compute_bands();
 
-    const StackParameters           &parameters;
-    std::string                      last_pruned; ///< what pruned last
-    unsigned int                     n_states = 0;
-    std::vector<std::string>         state_names;
-    std::vector<unsigned int>        n_points; ///< stress points per body
+    const StackParameters    &parameters;
+    std::string               last_pruned; ///< what pruned last
+    unsigned int              n_states = 0;
+    std::vector<std::string>  state_names;
+    std::vector<unsigned int> n_points; ///< stress points per body
+    /** Joints given a clearance that keep Design/Running clearance. */
+    std::vector<unsigned int>        running;
+    std::vector<unsigned int>        n_gap_points; ///< per entry of running
     std::vector<std::string>         criterion_names;
     std::vector<double>              U0;    ///< mm, all joints
     std::vector<double>              q0;    ///< flat figures at U0

@@ -177,6 +177,11 @@ namespace coaxfit
      * the joints of Design/Selected joints (StackFitSelection).
      */
     std::string design_mode = "check";
+    /**
+     * Design/Running clearance (mm, diametral): what every joint given a
+     * clearance must keep at each point, in every state; 0: not judged.
+     */
+    double running_clearance = 0.;
     /** Design/Selected joints as given: `all`, or joint names. */
     std::string selected_text = "all";
     /** Per joint: chosen by the selection (Design/Mode = select). */

@@ -11,6 +11,7 @@ $PY variants_table.py
 $PY refinement_study.py 4
 $PY sections_benchmark.py
 $PY stack_benchmark.py
+$PY stack_selection_benchmark.py
 $PY plastic_benchmark.py
 $PY alpha_spectrum.py
 $PY separation_study.py 2

@@ -92,8 +92,12 @@ namespace coaxfit
               if (!o.joints.empty() || selection)
                 o.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
               if (selection && selection->found())
-                for (const IsoFit &f : selection->chosen)
-                  o.fits += (o.fits.empty() ? "" : " + ") + f.name;
+                {
+                  std::vector<std::string> names;
+                  for (const IsoFit &f : selection->chosen)
+                    names.push_back(f.name);
+                  o.fits = part_text(names);
+                }
             };
             int code = 0;
             try

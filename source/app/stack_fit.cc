@@ -453,17 +453,6 @@ namespace coaxfit
 
 
 
-  std::string
-  part_text(const std::vector<std::string> &part)
-  {
-    std::string s;
-    for (const std::string &b : part)
-      s += (s.empty() ? "" : " + ") + b;
-    return s;
-  }
-
-
-
   namespace
   {
     /** The block of @p C from row and column @p at, @p n of each. */
@@ -745,22 +734,15 @@ namespace coaxfit
     f.contact_length = (joint.whole ? 1. : 2.) * in_contact;
     // The gap of each point from the bodies' own displacements (the loads'
     // answers included).
-    const Vector<double> u_in
-      = bodies[k]->interface_radial_values(state_fields[k]);
-    const Vector<double> u_out
-      = bodies[k + 1]->interface_radial_values(state_fields[k + 1]);
+    const std::vector<double> gaps
+      = joint_gaps(k, joint.interference, state_fields);
     f.gap_min = std::numeric_limits<double>::max();
     f.gap_max = 0.;
     for (unsigned int i = 0; i < joint.n_points(); ++i)
       {
-        const double gap
-          = state.contact[k][i] ?
-              0. :
-              2.
-                * (u_out[layout.offset(k + 1, k) + i]
-                   - u_in[layout.offset(k, k) + i] - joint.interference);
-        f.gap_min = std::min(f.gap_min, gap);
-        f.gap_max = std::max(f.gap_max, gap);
+        const double gap = state.contact[k][i] ? 0. : gaps[i];
+        f.gap_min        = std::min(f.gap_min, gap);
+        f.gap_max        = std::max(f.gap_max, gap);
       }
     f.friction_coefficient = parameters.fits[k].friction_coefficient;
     // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l, in N m.
@@ -790,8 +772,9 @@ namespace coaxfit
 
 
   std::vector<StressState>
-  StackFit::mid_plane_stresses(const unsigned int    b,
-                               const Vector<double> &field) const
+  StackFit::mid_plane_stresses(
+    const unsigned int                           b,
+    const std::vector<std::vector<StressState>> &along) const
   {
     // The mid-plane: z = 0 of a half model; of a whole one, the plane
     // through the middle of the body's bore joint (the innermost body's:
@@ -799,10 +782,8 @@ namespace coaxfit
     const StackJoint &own = stack_joints[b > 0 ? b - 1 : 0];
     const double z_mid = own.whole ? 0.5 * (own.z.front() + own.z.back()) : 0.;
     std::vector<StressState> result;
-    for (const double r : check_radii(b))
+    for (const std::vector<StressState> &states : along)
       {
-        const std::vector<StressState> states
-          = stresses_along_radius(*bodies[b], field, r);
         double nearest = std::numeric_limits<double>::infinity();
         for (const StressState &s : states)
           nearest = std::min(nearest, std::abs(s.z - z_mid));
@@ -811,6 +792,38 @@ namespace coaxfit
             result.push_back(s);
       }
     return result;
+  }
+
+
+
+  std::vector<std::vector<StressState>>
+  StackFit::stresses_along_radii(const unsigned int    b,
+                                 const Vector<double> &field) const
+  {
+    std::vector<std::vector<StressState>> along;
+    for (const double r : check_radii(b))
+      along.push_back(stresses_along_radius(*bodies[b], field, r));
+    return along;
+  }
+
+
+
+  std::vector<double>
+  StackFit::joint_gaps(const unsigned int                 k,
+                       const double                       interference,
+                       const std::vector<Vector<double>> &state_fields) const
+  {
+    const StackLayout    layout(stack_joints);
+    const Vector<double> u_in
+      = bodies[k]->interface_radial_values(state_fields[k]);
+    const Vector<double> u_out
+      = bodies[k + 1]->interface_radial_values(state_fields[k + 1]);
+    std::vector<double> gaps;
+    for (unsigned int i = 0; i < stack_joints[k].n_points(); ++i)
+      gaps.push_back(2.
+                     * (u_out[layout.offset(k + 1, k) + i]
+                        - u_in[layout.offset(k, k) + i] - interference));
+    return gaps;
   }
 
 
@@ -853,21 +866,9 @@ namespace coaxfit
                                      * f.p_mean * M_PI * f.diameter * f.diameter
                                      * joints[k].length() / 2. / 1000.);
             figures.p_mean.push_back(f.p_mean);
-            figures.touches.push_back(f.separated_points
-                                      < joints[k].n_points());
+
             // The diametral gap at each point (about 0 in contact).
-            const StackLayout    layout(stack_joints);
-            const Vector<double> u_in
-              = bodies[k]->interface_radial_values(field[k]);
-            const Vector<double> u_out
-              = bodies[k + 1]->interface_radial_values(field[k + 1]);
-            std::vector<double> gap;
-            for (unsigned int i = 0; i < joints[k].n_points(); ++i)
-              gap.push_back(2.
-                            * (u_out[layout.offset(k + 1, k) + i]
-                               - u_in[layout.offset(k, k) + i]
-                               - joints[k].interference));
-            figures.gap.push_back(gap);
+            figures.gap.push_back(joint_gaps(k, joints[k].interference, field));
           }
         for (unsigned int b = 0; b < bodies.size(); ++b)
           {
@@ -876,7 +877,8 @@ namespace coaxfit
             if (!loaded)
               bodies[b]->set_load(BodyLoad());
             std::vector<Axisymmetric::Vector4> stress;
-            for (const StressState &s : mid_plane_stresses(b, field[b]))
+            for (const StressState &s :
+                 mid_plane_stresses(b, stresses_along_radii(b, field[b])))
               stress.push_back(s.sigma);
             bodies[b]->set_load(load);
             figures.stress.push_back(stress);
@@ -916,10 +918,12 @@ namespace coaxfit
     f.name                = parameters.bodies[b];
     f.von_mises_mid_plane = f.von_mises_max = 0.;
     f.hoop_mid_plane = -std::numeric_limits<double>::infinity();
-    for (const double r : check_radii(b))
-      for (const StressState &s : stresses_along_radius(*bodies[b], field, r))
+    const std::vector<std::vector<StressState>> along
+      = stresses_along_radii(b, field);
+    for (const std::vector<StressState> &states : along)
+      for (const StressState &s : states)
         f.von_mises_max = std::max(f.von_mises_max, s.von_mises());
-    for (const StressState &s : mid_plane_stresses(b, field))
+    for (const StressState &s : mid_plane_stresses(b, along))
       {
         f.von_mises_mid_plane = std::max(f.von_mises_mid_plane, s.von_mises());
         f.hoop_mid_plane      = std::max(f.hoop_mid_plane, s.hoop());

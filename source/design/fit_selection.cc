@@ -733,19 +733,15 @@ namespace coaxfit
       return std::abs(0.5e-3 * (f.min_interference() + f.max_interference())
                       - centre);
     };
-    std::stable_sort(
-      fits.begin(), fits.end(), [&](const IsoFit &a, const IsoFit &b) {
-        const bool pa = is_preferred_fit(a.name), pb = is_preferred_fit(b.name);
-        if (pa != pb)
-          return pa;
-        const double wa = a.max_interference() - a.min_interference(),
-                     wb = b.max_interference() - b.min_interference();
-        if (wa != wb)
-          return wa > wb;
-        if (offset(a) != offset(b))
-          return offset(a) < offset(b);
-        return a.name < b.name;
-      });
+    std::stable_sort(fits.begin(),
+                     fits.end(),
+                     [&](const IsoFit &a, const IsoFit &b) {
+                       if (preference_key(a) != preference_key(b))
+                         return preference_key(a) < preference_key(b);
+                       if (offset(a) != offset(b))
+                         return offset(a) < offset(b);
+                       return a.name < b.name;
+                     });
   }
 
 

@@ -36,16 +36,6 @@ namespace coaxfit
       s << std::setprecision(digits) << x;
       return s.str();
     }
-
-    /** The names of the fits of a combination joined by " + ". */
-    std::string
-    joined(const std::vector<std::string> &names)
-    {
-      std::string text;
-      for (const std::string &n : names)
-        text += (text.empty() ? "" : " + ") + n;
-      return text;
-    }
   } // namespace
 
 
@@ -180,13 +170,8 @@ namespace coaxfit
 
     // Each selected joint's candidates, best ranked first.
     const auto rank = [](const IsoFit &a, const IsoFit &b) {
-      const bool pa = is_preferred_fit(a.name), pb = is_preferred_fit(b.name);
-      if (pa != pb)
-        return pa;
-      const double wa = a.max_interference() - a.min_interference(),
-                   wb = b.max_interference() - b.min_interference();
-      if (wa != wb)
-        return wa > wb;
+      if (preference_key(a) != preference_key(b))
+        return preference_key(a) < preference_key(b);
       return a.name < b.name;
     };
     double n_all = 1.;
@@ -678,7 +663,7 @@ namespace coaxfit
             + ") carries the requirement in every state at every "
               "corner of its bands: "
             + (std::isfinite(closest.margin) ?
-                 "the closest, " + joined(names) + ", reaches "
+                 "the closest, " + part_text(names) + ", reaches "
                    + figure(closest.margin, 4) + " of it ("
                    + closest.governed_by + ")" :
                  "in each, a selected joint loses its contact")
@@ -760,7 +745,7 @@ namespace coaxfit
           if (!check.touches || check.margin < 1.)
             {
               notes.push_back(
-                joined(names) + " failed its FE check at U = " +
+                part_text(names) + " failed its FE check at U = " +
                 [&]() {
                   std::string text;
                   for (const unsigned int k : selected)
@@ -973,7 +958,7 @@ namespace coaxfit
             std::vector<std::string> names;
             for (unsigned int j = 0; j < selected.size(); ++j)
               names.push_back(candidates[j][ranked[r].choice[j]].name);
-            out << "  also: " << joined(names) << " (margin "
+            out << "  also: " << part_text(names) << " (margin "
                 << figure(ranked[r].margin, 4) << ")\n";
           }
       }

@@ -1021,6 +1021,17 @@ namespace coaxfit
 
 
 
+  std::string
+  part_text(const std::vector<std::string> &part)
+  {
+    std::string s;
+    for (const std::string &b : part)
+      s += (s.empty() ? "" : " + ") + b;
+    return s;
+  }
+
+
+
   void
   StackParameters::use_iso_fit(const unsigned int k, const IsoFit &iso)
   {

@@ -102,9 +102,6 @@ namespace coaxfit
     double loosening_speed = std::numeric_limits<double>::quiet_NaN();
   };
 
-  /** The bodies of a part-assembly joined by ` + ` (`Shaft + Sleeve`). */
-  std::string
-  part_text(const std::vector<std::string> &part);
 
   /**
    * The strength figures of one body of a stack after joining: the largest
@@ -365,15 +362,35 @@ namespace coaxfit
                 const std::vector<Vector<double>> &state_fields) const;
 
     /**
-     * The stresses of body @p b with the field @p field on its surfaces at
-     * the mid-plane (the points of the verdict's yield and fracture
+     * The stresses of body @p b on its surfaces at the mid-plane, of its
+     * stresses along its check radii @p along (stresses_along_radii()) (the points of the verdict's yield and fracture
      * figures): a ring's bore and outside, a section's joints and its
      * smallest and largest radius, at z = 0 of a half model or, whole, on
      * the plane through the middle of its bore joint (the innermost
      * body's: its joint).
      */
     std::vector<StressState>
-    mid_plane_stresses(unsigned int b, const Vector<double> &field) const;
+    mid_plane_stresses(
+      unsigned int                                 b,
+      const std::vector<std::vector<StressState>> &along) const;
+
+    /**
+     * The stresses of body @p b with the field @p field along each of its
+     * check_radii() (stresses_along_radius()), which mid_plane_stresses()
+     * takes.
+     */
+    std::vector<std::vector<StressState>>
+    stresses_along_radii(unsigned int b, const Vector<double> &field) const;
+
+    /**
+     * The diametral gap (mm) at each point of joint @p k that the bodies'
+     * fields @p state_fields leave with the radial @p interference: 2
+     * (u_outer - u_inner - interference); about 0 where in contact.
+     */
+    std::vector<double>
+    joint_gaps(unsigned int                       k,
+               double                             interference,
+               const std::vector<Vector<double>> &state_fields) const;
 
     /**
      * The radii of body @p b's surfaces that its strength figures take

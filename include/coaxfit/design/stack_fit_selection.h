@@ -15,17 +15,16 @@ namespace coaxfit
   /**
    * What the selection of a stack's fits takes from one state of the stack
    * (at assembly, or in service) at given interferences: each joint's
-   * torque capacity and mean pressure and whether it touches, and the
+   * torque capacity and mean pressure (it touches where positive), and the
    * stresses of each body at its mid-plane check points (the points of
    * the verdict's yield and fracture figures).
    */
   struct StackStateFigures
   {
-    std::string                                     state;   ///< "at assembly"
-    std::vector<double>                             torque;  ///< N m, per joint
-    std::vector<double>                             p_mean;  ///< MPa, per joint
-    std::vector<bool>                               touches; ///< per joint
-    std::vector<std::vector<Axisymmetric::Vector4>> stress;  ///< per body
+    std::string                                     state;  ///< "at assembly"
+    std::vector<double>                             torque; ///< N m, per joint
+    std::vector<double>                             p_mean; ///< MPa, per joint
+    std::vector<std::vector<Axisymmetric::Vector4>> stress; ///< per body
     /**
      * Per joint, at each point: the diametral gap the bodies leave (mm;
      * about 0 where in contact), for Design/Running clearance.

@@ -2,6 +2,7 @@
 #define coaxfit_iso286_h
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
@@ -80,6 +81,17 @@ namespace coaxfit
    */
   bool
   is_preferred_fit(const std::string &name);
+
+  /**
+   * How a fit selection ranks fits first (compare with <): the preferred
+   * fits, then the widest interference band (the widest tolerances).
+   */
+  inline std::pair<bool, double>
+  preference_key(const IsoFit &fit)
+  {
+    return {!is_preferred_fit(fit.name),
+            fit.min_interference() - fit.max_interference()};
+  }
 } // namespace coaxfit
 
 #endif

@@ -310,6 +310,13 @@ namespace coaxfit
    * empty if the file gives none (a file of today's Shaft and Hub).
    * Refuses unknown or repeated names and fewer than two bodies.
    */
+  /**
+   * Names joined by ` + `: the bodies of a part-assembly (`Shaft + Sleeve`),
+   * a combination of fits (`H7/s6 + H7/u6`).
+   */
+  std::string
+  part_text(const std::vector<std::string> &part);
+
   std::vector<std::string>
   assembly_bodies(
     const std::string                                      &filename,

@@ -67,6 +67,34 @@ namespace coaxfit_test
   inline const std::string quiet
     = " --set \"Output/Write vtu=false\" --set \"Output/Write plots=false\" ";
 
+  /** p at @p z, linear between the points (z, p) of @p profile. */
+  inline double
+  profile_at(const std::vector<std::pair<double, double>> &profile,
+             const double                                  z)
+  {
+    for (unsigned int i = 1; i < profile.size(); ++i)
+      if (profile[i].first >= z)
+        {
+          const auto &[z0, p0] = profile[i - 1];
+          const auto &[z1, p1] = profile[i];
+          return p0 + (p1 - p0) * (z - z0) / (z1 - z0);
+        }
+    return NAN;
+  }
+
+  /** The pressures of every joint of a stack's summary (middle, mean). */
+  inline std::vector<double>
+  joint_pressures(const nlohmann::json &summary)
+  {
+    std::vector<double> p;
+    for (const auto &j : summary["joints"])
+      {
+        p.push_back(j["pressure"]["at_mid_plane"]);
+        p.push_back(j["pressure"]["mean"]);
+      }
+    return p;
+  }
+
   struct Result
   {
     int                                    exit_code;
@@ -78,14 +106,7 @@ namespace coaxfit_test
     double
     at(const double z) const
     {
-      for (unsigned int i = 1; i < profile.size(); ++i)
-        if (profile[i].first >= z)
-          {
-            const auto &[z0, p0] = profile[i - 1];
-            const auto &[z1, p1] = profile[i];
-            return p0 + (p1 - p0) * (z - z0) / (z1 - z0);
-          }
-      return NAN;
+      return profile_at(profile, z);
     }
   };
 

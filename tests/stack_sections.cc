@@ -176,19 +176,6 @@ namespace
              "subsection Coupling\n  set Tolerance = 1e-10\nend\n";
   }
 
-  /** The pressures of every joint of a run (at the mid-plane, mean). */
-  std::vector<double>
-  pressures(const nlohmann::json &s)
-  {
-    std::vector<double> p;
-    for (const auto &j : s["joints"])
-      {
-        p.push_back(j["pressure"]["at_mid_plane"]);
-        p.push_back(j["pressure"]["mean"]);
-      }
-    return p;
-  }
-
   /** The largest difference of @p a and @p b over the largest of @p b. */
   double
   difference(const std::vector<double> &a, const std::vector<double> &b)
@@ -223,7 +210,7 @@ namespace
                   << r.exit_code << ", converged " << s["converged"]
                   << ", model " << s["mesh"]["model"].get<std::string>()
                   << '\n';
-        runs.push_back(pressures(s));
+        runs.push_back(joint_pressures(s));
         if (runs.size() > 1)
           {
             const double d = difference(runs.back(), runs.front());

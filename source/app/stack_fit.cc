@@ -7,6 +7,7 @@
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/coupling/scene.h>
+#include <coaxfit/coupling/stack_monolithic_solver.h>
 #include <coaxfit/design/compound_cylinders.h>
 #include <coaxfit/design/din7190.h>
 #include <coaxfit/design/operation_analysis.h>
@@ -277,10 +278,18 @@ namespace coaxfit
                                                false,
                                                load));
         if (parameters.sections)
-          bodies.back()->set_mesh_builder(
-            [mesh = section_meshes[b]](Triangulation<2> &t) {
-              t.copy_triangulation(*mesh);
-            });
+          {
+            bodies.back()->set_mesh_builder(
+              [mesh = section_meshes[b]](Triangulation<2> &t) {
+                t.copy_triangulation(*mesh);
+              });
+            // A body beside a shoulder face is held axially at its joint's
+            // end there (the reaction is zero either way), so that the
+            // face's two sides stay together in the output.
+            if (const std::optional<double> z
+                = parameters.sections->axial_pin_z(b))
+              bodies.back()->set_axial_pin_z(*z);
+          }
         else
           bodies.back()->set_mesh_builder(
             [ring](Triangulation<2> &t) { make_stack_ring_mesh(t, ring); });
@@ -602,15 +611,23 @@ namespace coaxfit
     const auto start = std::chrono::steady_clock::now();
     if (parameters.method == SolverMethod::monolithic)
       {
-        std::vector<FullMatrix<double>> C;
-        for (const auto &c : condensed)
-          C.push_back(c->get_compliance());
-        solution  = solve_stack_contact(C,
-                                       stack_joints,
-                                       parameters.unilateral,
-                                       active_set_steps);
+        // The reference on the full operators, independent of the
+        // condensation the staggered process works on.
+        std::vector<const BodyDiscretization *> discretizations;
+        for (const auto &b : bodies)
+          discretizations.push_back(b.get());
+        StackMonolithicSolver monolithic(discretizations,
+                                         stack_joints,
+                                         parameters.unilateral);
+        solution  = monolithic.solve(active_set_steps);
         converged = true;
         steps     = 0;
+        if (progress)
+          *progress << "  monolithic on the full operators: "
+                    << active_set_steps << " active set"
+                    << (active_set_steps == 1 ? "" : "s")
+                    << ", traction mismatch "
+                    << number(monolithic.traction_mismatch(), 3) << '\n';
       }
     else
       {
@@ -1358,6 +1375,16 @@ namespace coaxfit
                 "whole (no plane of symmetry through every joint's "
                 "middle; z of the drawing)")
           << '\n';
+    for (unsigned int k = 0; k + 1 < parameters.bodies.size(); ++k)
+      if (parameters.sections)
+        if (const auto &face = parameters.sections->shoulder_face(k))
+          out << "  " << parameters.joint_name(k)
+              << ": the sections also touch on the face at z = "
+              << number(face->z, 6) << " (D " << number(face->diameter_inner, 6)
+              << " to " << number(face->diameter_outer, 6)
+              << "); nothing loads the bodies along the axis, so it carries "
+                 "no force: modelled free, both held axially at the joint's "
+                 "end there\n";
     if (parameters.select_mode())
       {
         const auto selecting = std::chrono::steady_clock::now();

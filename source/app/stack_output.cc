@@ -295,7 +295,10 @@ namespace coaxfit
         method["alpha"]       = alpha;
       }
     else
-      method["active_set_steps"] = active_set_steps;
+      {
+        method["operators"]        = "full";
+        method["active_set_steps"] = active_set_steps;
+      }
     j["coupling"] = method;
     // The loads of operation: the joints' and bodies' figures are of the
     // service state, each with its state of assembly under "assembly".
@@ -401,10 +404,18 @@ namespace coaxfit
         for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
           if (parameters.drawn_as_section(b))
             drawn[parameters.bodies[b]] = parameters.section_text[b];
-        j["sections"] = {{"model", model},
-                         {"drawing_z_of_model_z0_mm",
-                          parameters.sections->drawing_offset()},
-                         {"drawn", drawn}};
+        j["sections"]        = {{"model", model},
+                                {"drawing_z_of_model_z0_mm",
+                                 parameters.sections->drawing_offset()},
+                                {"drawn", drawn}};
+        nlohmann::json faces = nlohmann::json::array();
+        for (unsigned int k = 0; k + 1 < parameters.bodies.size(); ++k)
+          if (const auto &face = parameters.sections->shoulder_face(k))
+            faces.push_back({{"joint", parameters.joint_name(k)},
+                             {"z", face->z},
+                             {"diameter_inner", face->diameter_inner},
+                             {"diameter_outer", face->diameter_outer}});
+        j["sections"]["shoulder_faces"] = faces;
       }
     j["timing"]            = timing;
     const std::string name = directory + "/summary.json";

@@ -2,6 +2,7 @@
 #include <coaxfit/design/design_report.h>
 #include <coaxfit/io/result_writers.h>
 #include <coaxfit/parameters/operation_entries.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <cmath>
 #include <filesystem>
@@ -148,6 +149,19 @@ namespace coaxfit
         for (unsigned int b = 0; b < p.bodies.size(); ++b)
           if (p.drawn_as_section(b))
             md << "- " << p.bodies[b] << ": `" << p.section_text[b] << "`\n";
+        for (unsigned int k = 0; k + 1 < p.bodies.size(); ++k)
+          if (const auto &face = p.sections->shoulder_face(k))
+            md << "\n"
+               << p.joint_name(k)
+               << ": the sections also touch on the face across the axis at "
+                  "z = "
+               << number(face->z, 6) << " (D "
+               << number(face->diameter_inner, 6) << " to "
+               << number(face->diameter_outer, 6)
+               << " mm). The joint is frictionless and nothing loads the "
+                  "bodies along the axis, so the face carries no force: it "
+                  "is modelled free, both bodies held axially at the "
+                  "joint's end beside it.\n";
       }
 
     md << "\n## Joints" << (has_loads() ? " in operation" : "")
@@ -302,7 +316,7 @@ namespace coaxfit
        << p.mesh.degree << ")); ";
     if (p.method == SolverMethod::monolithic)
       md << "the contact of all joints solved monolithically on the "
-            "condensed compliances, "
+            "bodies' full operators (one system, the joints' points tied), "
          << active_set_steps << " active set step(s).\n";
     else
       md << "the staggered Dirichlet-Neumann process over all joints ("

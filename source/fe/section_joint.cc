@@ -1,5 +1,6 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/section_joint.h>
+#include <coaxfit/parameters/parameter_checks.h>
 
 #include <algorithm>
 #include <cmath>
@@ -243,5 +244,59 @@ namespace coaxfit
         integral += r * (breaks[i + 1] - breaks[i]);
       }
     return 2. * integral / (z_end - z_start);
+  }
+
+
+
+  std::vector<JointPiece>
+  faces_across_axis(std::vector<JointPiece> &pieces, const double tol)
+  {
+    std::vector<JointPiece> faces;
+    for (auto piece = pieces.begin(); piece != pieces.end();)
+      if (std::abs(piece->start[1] - piece->end[1]) <= tol)
+        {
+          faces.push_back(*piece);
+          piece = pieces.erase(piece);
+        }
+      else
+        ++piece;
+    return faces;
+  }
+
+
+
+  std::optional<ShoulderFace>
+  shoulder_beside(const std::vector<JointPiece> &faces,
+                  const double                   z_lo,
+                  const double                   z_hi,
+                  const double                   tol,
+                  const std::string             &both)
+  {
+    if (faces.empty())
+      return std::nullopt;
+    const double z = faces.front().start[1];
+    double d_in  = 2. * std::min(faces.front().start[0], faces.front().end[0]);
+    double d_out = 2. * std::max(faces.front().start[0], faces.front().end[0]);
+    for (const JointPiece &face : faces)
+      {
+        if (std::abs(face.start[1] - z) > tol)
+          throw InputError(
+            both + "the sections touch on faces across the axis at z = "
+            + number(z, 6) + " and z = " + number(face.start[1], 6)
+            + ": one body would be held axially between them, and the "
+              "axial force that holds it depends on the axial strains, which "
+              "a face contact would have to take; allowed: one face beside "
+              "the joint (a hub against a shoulder)");
+        d_in  = std::min(d_in, 2. * std::min(face.start[0], face.end[0]));
+        d_out = std::max(d_out, 2. * std::max(face.start[0], face.end[0]));
+      }
+    if (z > z_lo + tol && z < z_hi - tol)
+      throw InputError(both
+                       + "the sections touch on a face across the axis "
+                         "at z = "
+                       + number(z, 6) + ", inside the joint from z = "
+                       + number(z_lo, 6) + " to " + number(z_hi, 6)
+                       + "; allowed: a face at or beyond an end of the joint");
+    return ShoulderFace{z, d_in, d_out};
   }
 } // namespace coaxfit

@@ -119,15 +119,7 @@ namespace coaxfit
     // shaft's end face on a step of the bore): with a frictionless joint
     // and no axial load they carry no force (below), so they are set
     // aside and the joint is what remains.
-    std::vector<JointPiece> faces;
-    for (auto piece = pieces.begin(); piece != pieces.end();)
-      if (std::abs(piece->start[1] - piece->end[1]) <= tol)
-        {
-          faces.push_back(*piece);
-          piece = pieces.erase(piece);
-        }
-      else
-        ++piece;
+    const std::vector<JointPiece> faces = faces_across_axis(pieces, tol);
     if (pieces.size() != 1)
       throw InputError(
         both + "the sections meet in " + std::to_string(pieces.size())
@@ -435,29 +427,7 @@ namespace coaxfit
                          "a shoulder is not modelled (the push-on distance "
                          "would press the face); allowed: a face beside a "
                          "cylindrical joint");
-    double d_in  = 2. * std::min(faces.front().start[0], faces.front().end[0]);
-    double d_out = 2. * std::max(faces.front().start[0], faces.front().end[0]);
-    for (const JointPiece &face : faces)
-      {
-        if (std::abs(face.start[1] - z) > tol)
-          throw InputError(
-            both + "the sections touch on faces across the axis at z = "
-            + number(z, 6) + " and z = " + number(face.start[1], 6)
-            + ": one body would be held axially between them, and the "
-              "axial force that holds it depends on the axial strains, which "
-              "a face contact would have to take; allowed: one face beside "
-              "the joint (a hub against a shoulder)");
-        d_in  = std::min(d_in, 2. * std::min(face.start[0], face.end[0]));
-        d_out = std::max(d_out, 2. * std::max(face.start[0], face.end[0]));
-      }
-    if (z > z_lo + tol && z < z_hi - tol)
-      throw InputError(both
-                       + "the sections touch on a face across the axis "
-                         "at z = "
-                       + number(z, 6) + ", inside the joint from z = "
-                       + number(z_lo, 6) + " to " + number(z_hi, 6)
-                       + "; allowed: a face at or beyond an end of the joint");
-    shoulder = ShoulderFace{z, d_in, d_out};
+    shoulder = shoulder_beside(faces, z_lo, z_hi, tol, both);
   }
 
 

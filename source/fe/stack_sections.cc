@@ -31,6 +31,9 @@ namespace coaxfit
           = "parameters " + entries[k] + " and " + entries[k + 1] + ": ";
         std::vector<JointPiece> pieces
           = merged(find_joint(*drawn[k], *drawn[k + 1]), tol);
+        // A face across the axis beside the joint (a wheel against a
+        // shaft's shoulder) is set aside: it carries no force (below).
+        std::vector<JointPiece> faces = faces_across_axis(pieces, tol);
         // Sections that meet within the drawing tolerance: corners on the
         // joint's cylinder moved onto it exactly, so that both meshes have
         // it.
@@ -43,13 +46,15 @@ namespace coaxfit
               drawn[b] = std::make_unique<SectionOutline>(
                 snapped(*drawn[b], a, c, tol));
             pieces = merged(find_joint(*drawn[k], *drawn[k + 1]), tol);
+            faces  = faces_across_axis(pieces, tol);
           }
         if (pieces.size() != 1)
           throw InputError(
             both + "the sections meet in " + std::to_string(pieces.size())
-            + " pieces; a joint of a stack is one cylinder in this version "
-              "(a face across the axis, a relief groove or a second seat "
-              "is not modelled in a stack yet)");
+            + " pieces along the axis; a joint of a stack is one cylinder "
+              "in this version, beside which a face across the axis may "
+              "touch (a relief groove or a second seat is not modelled in "
+              "a stack yet)");
         const JointPiece &joint = pieces.front();
         if (std::abs(joint.start[0] - joint.end[0]) > tol)
           throw InputError(
@@ -66,6 +71,8 @@ namespace coaxfit
         radius.push_back(joint.start[0]);
         z_lo[k] = std::min(joint.start[1], joint.end[1]);
         z_hi[k] = std::max(joint.start[1], joint.end[1]);
+        shoulders.push_back(
+          shoulder_beside(faces, z_lo[k], z_hi[k], tol, both));
         half_length.push_back(0.5 * (z_hi[k] - z_lo[k]));
         outer_mean.push_back(
           mean_outer_diameter(*drawn[k + 1], z_lo[k], z_hi[k]));
@@ -130,6 +137,17 @@ namespace coaxfit
         start = z_lo;
       }
     half_model_ = symmetric;
+  }
+
+
+
+  std::optional<double>
+  StackSections::axial_pin_z(const unsigned int b) const
+  {
+    for (const unsigned int k : {b - 1, b})
+      if (k < shoulders.size() && shoulders[k]) // b - 1 wraps round for 0
+        return std::clamp(shoulders[k]->z - z_m, joint_start(k), joint_end(k));
+    return std::nullopt;
   }
 
 

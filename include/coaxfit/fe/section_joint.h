@@ -6,6 +6,7 @@
 
 #include <coaxfit/fe/section_outline.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,44 @@ namespace coaxfit
    */
   std::vector<JointPiece>
   find_joint(const SectionOutline &inner, const SectionOutline &outer);
+
+  /**
+   * A face across the axis where two sections also touch, beside their
+   * joint (a hub's end face on a shaft's shoulder, a shaft's end face on a
+   * step of the bore), in the drawing's coordinates.
+   */
+  struct ShoulderFace
+  {
+    double z;              ///< its axial position (mm)
+    double diameter_inner; ///< where the touching part begins (mm)
+    double diameter_outer; ///< and ends (mm)
+  };
+
+  /**
+   * Take the faces across the axis (pieces of constant z within @p tol)
+   * out of @p pieces and return them.
+   */
+  std::vector<JointPiece>
+  faces_across_axis(std::vector<JointPiece> &pieces, double tol);
+
+  /**
+   * The face across the axis @p faces (from faces_across_axis()) beside a
+   * joint from @p z_lo to @p z_hi (drawing z, mm), or none if @p faces is
+   * empty. With a frictionless joint and no axial load nothing pushes the
+   * bodies against each other along the axis: the face's pressures are
+   * non-negative with a vanishing axial resultant, so they vanish and the
+   * face is modelled free.
+   * @throws InputError starting with @p both (the entries at fault) if the
+   * faces lie at more than one axial position (a body held between two
+   * faces: the axial force would depend on strains a face contact must
+   * take) or inside the joint's axial range.
+   */
+  std::optional<ShoulderFace>
+  shoulder_beside(const std::vector<JointPiece> &faces,
+                  double                         z_lo,
+                  double                         z_hi,
+                  double                         tol,
+                  const std::string             &both);
 
   /**
    * Refuse sections @p inner and @p outer that overlap (find_joint()'s

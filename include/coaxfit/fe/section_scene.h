@@ -215,17 +215,8 @@ namespace coaxfit
     TaggedSegment
     contact_segment(bool shaft) const;
 
-    /**
-     * A face across the axis where the sections also touch, beside the
-     * joint (a hub's end face on a shaft's shoulder, a shaft's end face on
-     * a step of the bore), in the drawing's coordinates.
-     */
-    struct ShoulderFace
-    {
-      double z;              ///< its axial position (mm)
-      double diameter_inner; ///< where the touching part begins (mm)
-      double diameter_outer; ///< and ends (mm)
-    };
+    /** A face across the axis beside the joint (section_joint.h). */
+    using ShoulderFace = coaxfit::ShoulderFace;
 
     /**
      * The face beside the joint where the sections touch, if any. With a

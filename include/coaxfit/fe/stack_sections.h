@@ -3,10 +3,12 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <coaxfit/fe/section_joint.h>
 #include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/fe/section_outline.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,8 @@ namespace coaxfit
    * out (its joint), the plane about which the whole stack is symmetric,
    * and the half sections the model meshes.
    *
-   * This version models stacks whose every joint is one cylinder. A
+   * This version models stacks whose every joint is one cylinder, beside
+   * which a face across the axis may touch (a shoulder). A
    * stack whose sections are all symmetric about one plane across the
    * axis through the middle of every joint (a gear wheel with a web
    * between its boss and its rim seat, a flanged sleeve, rings of
@@ -95,6 +98,27 @@ namespace coaxfit
     }
 
     /**
+     * The face across the axis beside joint @p k where its two sections
+     * also touch (a wheel's end face on a shaft's shoulder), in the
+     * drawing's coordinates, if any. Its joint is frictionless and nothing
+     * loads the bodies along the axis, so the face carries no force and is
+     * modelled free (shoulder_beside()).
+     */
+    const std::optional<ShoulderFace> &
+    shoulder_face(unsigned int k) const
+    {
+      return shoulders[k];
+    }
+
+    /**
+     * Model z at which a whole model holds body @p b axially: the end of
+     * its bore joint at a shoulder face, else of its outer joint at one;
+     * none without a shoulder (then the joint's middle).
+     */
+    std::optional<double>
+    axial_pin_z(unsigned int b) const;
+
+    /**
      * Whether the model is the half z >= 0 of a stack symmetric about a
      * plane through every joint's middle (else the sections whole, in the
      * drawing's coordinates).
@@ -166,6 +190,7 @@ namespace coaxfit
     std::vector<std::unique_ptr<SectionOutline>> drawn, half;
     std::vector<double>                          radius, half_length;
     std::vector<double>                          outer_mean; ///< per joint
+    std::vector<std::optional<ShoulderFace>>     shoulders;  ///< per joint
     std::vector<double>                          start; ///< joints' model z
     double                                       z_m         = 0.;
     bool                                         half_model_ = true;

@@ -309,6 +309,33 @@ main()
       << agreement(slip["joints"][1]["design"]["slip_safety"], T1 / 1500., 1e-6)
       << " (1e-6)\n";
     verdict(slip);
+    // With an axial force and K_A: DIN 7190's resultant, the friction
+    // force nu p pi D l over K_A sqrt((2 M / D)^2 + F^2).
+    const auto resultant = [](const double D) {
+      return 1.25 * std::hypot(2e3 * 1500. / D, 30000.);
+    };
+    const double S0 = 2e3 * T0 / 60. / resultant(60.),
+                 S1 = 2e3 * T1 / 90. / resultant(90.);
+    std::cout << "  and Design/Required axial force = 30000 N, Application "
+                 "factor = 1.25; by hand "
+              << S0 << " and " << S1 << ":\n";
+    const nlohmann::json axial
+      = run_example("axial",
+                    "--set 'Fit/Friction coefficient=0.1' --set "
+                    "'Design/Required torque=1500' --set 'Design/Slip "
+                    "safety=1.2' --set 'Design/Required axial force=30000' "
+                    "--set 'Design/Application factor=1.25'");
+    std::cout
+      << "  the run's safeties against slip "
+      << agreement(axial["joints"][0]["design"]["slip_safety"], S0, 1e-6)
+      << " and "
+      << agreement(axial["joints"][1]["design"]["slip_safety"], S1, 1e-6)
+      << " (1e-6), axial force capacity of Shaft-Sleeve "
+      << agreement(axial["joints"][0]["design"]["axial_force_capacity"],
+                   2e3 * T0 / 60.,
+                   1e-6)
+      << " (1e-6)\n";
+    verdict(axial);
     // The hub's hoop stress at its bore, p1 (b^2 + a^2) / (b^2 - a^2).
     const double hoop_hub
       = p1 * (80. * 80. + 45. * 45.) / (80. * 80. - 45. * 45.);
@@ -463,6 +490,8 @@ main()
         std::string("--set 'Fit/Shaft-Sleeve/ISO fit=H7/s6'"),
         std::string("--set 'Fit/Sleeve-Hub/ISO fit=H7/z9'"),
         std::string("--set 'Design/Slip safety=0.5'"),
+        std::string("--set 'Design/Required axial force=2000'"),
+        std::string("--set 'Design/Application factor=0.8'"),
         std::string("--set 'Fit/Sleeve-Hub/Outer roughness Rz=-1'"),
         std::string("--set 'Fit/Shaft-Sleeve/Diametral interference=-0.5' "
                     "--set 'Fit/Inner roughness Rz=400'"),

@@ -765,9 +765,11 @@ namespace coaxfit
     // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l, in N m.
     f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI * f.diameter
                         * f.diameter * joint.length() / 2. / 1000.;
-    f.slip_safety = parameters.required_torque > 0. ?
-                      f.torque_capacity / parameters.required_torque :
-                      0.;
+    // Against DIN 7190's resultant of both loads (as a torque at D).
+    f.slip_safety
+      = parameters.slip_judged() ?
+          f.torque_capacity / parameters.required_torque_at(f.diameter) :
+          0.;
     return f;
   }
 
@@ -1497,16 +1499,16 @@ namespace coaxfit
           out << "  " << f.name << ": torque capacity " << std::setprecision(6)
               << f.torque_capacity << " N m (friction coefficient "
               << f.friction_coefficient << ")";
-          if (parameters.required_torque > 0.)
+          if (parameters.slip_judged())
             out << ", safety against slip " << f.slip_safety << " at "
-                << parameters.required_torque << " N m"
+                << parameters.required_loads_text()
                 << (f.slip_safety < 1. ? ": SLIPS" : "");
           if (has_loads())
             {
               const JointFigures &a = joints_assembly[&f - &joints_out[0]];
               out << "; in the state of assembly " << a.torque_capacity
                   << " N m";
-              if (parameters.required_torque > 0.)
+              if (parameters.slip_judged())
                 out << ", safety " << a.slip_safety
                     << (a.slip_safety < 1. ? ": SLIPS" : "");
             }

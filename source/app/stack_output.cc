@@ -87,9 +87,12 @@ namespace coaxfit
         = {{"pressure", f.lame_p}, {"pressure_alone", f.lame_alone_p}};
       if (f.friction_coefficient > 0.)
         {
+          // mu p_mean pi D l, N: the axial force capacity.
           j["design"]
             = {{"friction_coefficient", f.friction_coefficient},
-               {"torque_capacity", number_or_null(f.torque_capacity)}};
+               {"torque_capacity", number_or_null(f.torque_capacity)},
+               {"axial_force_capacity",
+                number_or_null(2000. * f.torque_capacity / f.diameter)}};
           if (slip)
             j["design"]["slip_safety"] = f.slip_safety;
         }
@@ -275,6 +278,15 @@ namespace coaxfit
     j["verdict"]     = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
     j["warnings"]    = cautions();
     j["design_mode"] = parameters.design_mode;
+    // What the verdict judges against.
+    j["requirements"]
+      = {{"required_torque", parameters.required_torque},
+         {"required_axial_force", parameters.required_axial_force},
+         {"application_factor", parameters.application_factor},
+         {"slip_safety", parameters.slip_safety},
+         {"yield_safety", parameters.yield_safety},
+         {"fracture_safety", parameters.fracture_safety},
+         {"running_clearance", parameters.running_clearance}};
     if (selection)
       j["selection"] = Json::parse(selection->json());
     Json method;
@@ -317,7 +329,7 @@ namespace coaxfit
     for (const JointFigures &f : joints_out)
       {
         const unsigned int k = &f - &joints_out[0];
-        joints_json.push_back(joint_json(f, parameters.required_torque > 0.));
+        joints_json.push_back(joint_json(f, parameters.slip_judged()));
         joints_json.back()["fit"] = parameters.fits[k].source;
         if (has_loads())
           {
@@ -328,7 +340,7 @@ namespace coaxfit
             if (a.friction_coefficient > 0.)
               {
                 assembly["torque_capacity"] = number_or_null(a.torque_capacity);
-                if (parameters.required_torque > 0.)
+                if (parameters.slip_judged())
                   assembly["slip_safety"] = a.slip_safety;
               }
             joints_json.back()["assembly"] = assembly;

@@ -31,16 +31,15 @@ namespace coaxfit
 
     /**
      * A joint's torque capacity and safety against slip as two cells of a
-     * table (`-` without a friction coefficient or @p required_torque).
+     * table (`-` without a friction coefficient or a required load,
+     * @p judged).
      */
     std::string
-    slip_cells(const JointFigures &f, const double required_torque)
+    slip_cells(const JointFigures &f, const bool judged)
     {
       return (f.friction_coefficient > 0. ? design_figure(f.torque_capacity) :
                                             std::string("-"))
-             + " | "
-             + (required_torque > 0. ? safety(f.slip_safety) :
-                                       std::string("-"));
+             + " | " + (judged ? safety(f.slip_safety) : std::string("-"));
     }
   } // namespace
 
@@ -69,7 +68,8 @@ namespace coaxfit
     for (const std::string &caution : cautions())
       md << "Caution: " << caution << ".\n\n";
     md << "The criteria: each joint with an interference touches; with a "
-          "required torque each joint's safety against slip reaches "
+          "required torque or axial force each joint's safety against slip "
+          "reaches "
        << design_figure(p.slip_safety)
        << " (Design/Slip safety); each body's safety against yield "
           "reaches "
@@ -98,7 +98,7 @@ namespace coaxfit
              << " | " << design_figure(f.p_max) << " | "
              << (f.closed ? std::string("closed") :
                             std::to_string(f.separated_points) + " points open")
-             << " | " << slip_cells(f, p.required_torque) << " |\n";
+             << " | " << slip_cells(f, p.slip_judged()) << " |\n";
         for (const JointFigures &f : joints_out)
           if (!std::isnan(f.loosening_speed))
             md << "\nLoosening speed of " << f.name << ": "
@@ -212,11 +212,14 @@ namespace coaxfit
              << (f.friction_coefficient > 0. ?
                    design_figure(f.friction_coefficient) :
                    std::string("not given"))
-             << " | " << slip_cells(f, p.required_torque) << " |\n";
-        if (p.required_torque > 0.)
-          md << "\nThe required torque " << design_figure(p.required_torque)
-             << " N m passes through every joint (Design/Required "
-                "torque).\n";
+             << " | " << slip_cells(f, p.slip_judged()) << " |\n";
+        if (p.slip_judged())
+          md << "\nThe loads " << p.required_loads_text()
+             << " pass through every joint (Design/Required torque, "
+                "Required axial force, Application factor); a joint's "
+                "safety against slip is its friction force mu p pi D l over "
+                "DIN 7190's resultant of the axial and the circumferential "
+                "force 2 M / D, times K_A.\n";
       }
 
     md << "\n## Joining (DIN 7190)\n\nEach joint's outer part heated, or "

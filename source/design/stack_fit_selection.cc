@@ -146,7 +146,7 @@ namespace coaxfit
     // The criteria, in the order judge() takes them.
     for (unsigned int s = 0; s < n_states; ++s)
       {
-        if (parameters.required_torque > 0.)
+        if (parameters.slip_judged())
           for (unsigned int k = 0; k < J; ++k)
             criterion_names.push_back("slip of " + parameters.joint_name(k)
                                       + " " + state_names[s]);
@@ -164,7 +164,8 @@ namespace coaxfit
                                     + parameters.joint_name(k) + " "
                                     + state_names[s]);
       }
-    criterion_names.push_back("no requirement (no Design/Required torque, "
+    criterion_names.push_back("no requirement (no Design/Required torque or "
+                              "axial force, "
                               "no strength of a body)");
     criterion_names.push_back("contact lost");
 
@@ -273,12 +274,11 @@ namespace coaxfit
     std::vector<std::string>                    names;
     for (unsigned int s = 0; s < n_states; ++s)
       {
-        if (parameters.required_torque > 0.)
+        if (parameters.slip_judged())
           for (unsigned int k = 0; k < J; ++k)
             {
               affine.emplace_back(s * per_state + k,
-                                  parameters.required_torque
-                                    * parameters.slip_safety);
+                                  required_torque(k) * parameters.slip_safety);
               names.push_back("slip of " + parameters.joint_name(k) + " "
                               + state_names[s]);
             }
@@ -473,10 +473,9 @@ namespace coaxfit
     };
     for (unsigned int s = 0; s < n_states; ++s)
       {
-        if (parameters.required_torque > 0.)
+        if (parameters.slip_judged())
           for (unsigned int k = 0; k < J; ++k)
-            improve(q[o + k]
-                    / (parameters.required_torque * parameters.slip_safety));
+            improve(q[o + k] / (required_torque(k) * parameters.slip_safety));
         for (unsigned int i = 0; i < selected.size(); ++i)
           if (!kept[i])
             j.touches = j.touches && q[o + J + selected[i]] > 0.;
@@ -827,11 +826,11 @@ namespace coaxfit
             for (unsigned int s = 0; s < n_states; ++s)
               {
                 const std::size_t o_s = at;
-                if (parameters.required_torque > 0.)
+                if (parameters.slip_judged())
                   for (unsigned int k = 0; k < J; ++k, ++name)
                     {
                       const double need
-                        = parameters.required_torque * parameters.slip_safety;
+                        = required_torque(k) * parameters.slip_safety;
                       linear_bound(a[o_s + k] - need,
                                    b[o_s + k],
                                    criterion_names[name]);

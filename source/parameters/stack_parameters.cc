@@ -588,16 +588,36 @@ namespace coaxfit
       "Torque in N m that the assembly passes from the innermost to the "
       "outermost body, through every joint: each joint's safety against "
       "slip is its torque capacity (with its Friction coefficient) over "
-      "it. 0: none. Allowed: 0 to 1e9.",
+      "it (with Required axial force: DIN 7190's resultant). 0: none. "
+      "Allowed: 0 to 1e9.",
       Patterns::Double(0., 1e9));
-    prm.add_parameter("Slip safety",
-                      slip_safety,
-                      "The safety against slip every joint must have, for "
-                      "the verdict (with a Required torque): a joint fails "
-                      "where its torque capacity over the required torque "
-                      "falls below this. 1: no joint may slip. Allowed: 1 "
-                      "to 100.",
-                      Patterns::Double(1., 100.));
+    prm.add_parameter(
+      "Required axial force",
+      required_axial_force,
+      "Axial force in N that the assembly passes from the innermost to the "
+      "outermost body, through every joint (a helical gear's thrust): each "
+      "joint's safety against slip is its friction force mu p pi D l over "
+      "the resultant of this and the circumferential force 2 M / D of "
+      "Required torque (DIN 7190). 0: none. Allowed: 0 to 1e9.",
+      Patterns::Double(0., 1e9));
+    prm.add_parameter(
+      "Application factor",
+      application_factor,
+      "Application (service) factor K_A of the loads: every joint must "
+      "carry K_A times Required torque and Required axial force (the safety "
+      "against slip is taken against those). 1: the loads as given; shocks "
+      "ask more (DIN 3990: 1.25 to 2.25). Dimensionless. Allowed: 1 to 10.",
+      Patterns::Double(1., 10.));
+    prm.add_parameter(
+      "Slip safety",
+      slip_safety,
+      "The safety against slip every joint must have, for "
+      "the verdict (with a Required torque or axial "
+      "force): a joint fails where its torque capacity "
+      "over the required torque (the resultant of both "
+      "loads times K_A) falls below this. 1: no joint may slip. Allowed: 1 "
+      "to 100.",
+      Patterns::Double(1., 100.));
     prm.add_parameter("Yield safety",
                       yield_safety,
                       "The safety against yield (yield strength over the "
@@ -628,7 +648,8 @@ namespace coaxfit
       design_mode,
       "check: the fits given (Fit) are checked. select: the ISO 286 fits "
       "of the joints of Selected joints are chosen together, so that "
-      "every joint carries the Required torque with the Slip safety and "
+      "every joint carries the Required torque and axial force with the "
+      "Slip safety and "
       "every body bears its stresses with the Yield (brittle: Fracture) "
       "safety at every corner of the fits' bands, at assembly and with the "
       "loads of Operation; the first combination (preferred fits, widest "
@@ -696,8 +717,11 @@ namespace coaxfit
       method == SolverMethod::monolithic ? "monolithic" : "staggered",
       Patterns::Selection("staggered|monolithic"),
       "staggered: the alternating Dirichlet-Neumann process over all joints "
-      "(Coupling/Ordering). monolithic: every joint's contact problem at "
-      "once on the bodies' condensed interface operators (the reference).");
+      "(Coupling/Ordering). monolithic: all bodies in one linear system on "
+      "their full finite element operators, every joint point in contact "
+      "tied, a primal-dual active set (the reference, independent of the "
+      "condensation the staggered process works on; one sparse "
+      "factorization of all bodies per active set).");
     prm.leave_subsection();
     prm.enter_subsection("Coupling");
     prm.declare_entry(
@@ -936,11 +960,14 @@ namespace coaxfit
                            + ": allowed is 0 (Fit's value) or 1e-6 <= nu_e "
                              "<= 1");
       }
-    if (required_torque > 0.)
+    if (slip_judged())
       for (unsigned int k = 0; k < n_joints(); ++k)
         if (fits[k].friction_coefficient == 0.)
           throw InputError(
-            "parameter Design/Required torque = " + number(required_torque)
+            std::string("parameter Design/")
+            + (required_torque > 0. ?
+                 "Required torque = " + number(required_torque) :
+                 "Required axial force = " + number(required_axial_force))
             + ": the joint " + joint_name(k)
             + " has no friction coefficient (set Fit/Friction coefficient "
               "or Fit/"
@@ -1500,5 +1527,18 @@ namespace coaxfit
                  + "' with the --set overrides)\n"
                  + without_entries(text.str(), entries_not_set(prm));
     return p;
+  }
+  std::string
+  StackParameters::required_loads_text() const
+  {
+    std::string text;
+    if (required_torque > 0.)
+      text = number(required_torque, 6) + " N m";
+    if (required_axial_force > 0.)
+      text += (text.empty() ? "" : " and ") + number(required_axial_force, 6)
+              + " N axially";
+    if (application_factor != 1.)
+      text += ", times K_A " + number(application_factor, 6);
+    return text;
   }
 } // namespace coaxfit

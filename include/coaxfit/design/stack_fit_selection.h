@@ -243,6 +243,16 @@ namespace coaxfit
     void
     compute_bands();
 
+    /**
+     * The torque joint @p k must carry in place of both required loads
+     * (StackParameters::required_torque_at() at its diameter, N m).
+     */
+    double
+    required_torque(const unsigned int k) const
+    {
+      return parameters.required_torque_at(parameters.joint_diameter(k));
+    }
+
     const StackParameters    &parameters;
     std::string               last_pruned; ///< what pruned last
     unsigned int              n_states = 0;

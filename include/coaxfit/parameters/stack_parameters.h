@@ -7,6 +7,7 @@
 #include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/parameters.h>
 
+#include <cmath>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -166,6 +167,42 @@ namespace coaxfit
      * 0: none (no safety against slip).
      */
     double required_torque = 0.;
+    /**
+     * Design/Required axial force (N): every joint passes it as it passes
+     * the torque (a helical gear's thrust); 0: none.
+     */
+    double required_axial_force = 0.;
+    /** Design/Application factor K_A of both loads. */
+    double application_factor = 1.;
+
+    /** Whether slip is judged: a Required torque or axial force. */
+    bool
+    slip_judged() const
+    {
+      return required_torque > 0. || required_axial_force > 0.;
+    }
+
+    /**
+     * The torque (N m) a joint of diameter @p diameter (mm) must carry in
+     * place of both loads: DIN 7190's resultant of the circumferential
+     * force 2 M / D and the axial force, times K_A, times D / 2. A joint's
+     * safety against slip is its torque capacity over this one (its axial
+     * force capacity over the resultant force).
+     */
+    double
+    required_torque_at(const double diameter) const
+    {
+      return application_factor
+             * std::hypot(required_torque,
+                          required_axial_force * diameter / 2000.);
+    }
+    /**
+     * The required loads in words: "1000 N m", "1000 N m and 5000 N
+     * axially", with ", times K_A 1.5" where the factor is not 1.
+     */
+    std::string
+    required_loads_text() const;
+
     /** Design/Slip safety: each joint's least safety against slip. */
     double slip_safety = 1.;
     /** Design/Yield safety: each ductile body's least safety. */

@@ -4,7 +4,8 @@
 // file with an unknown body's subsection (bad input) and three_rings.prm
 // stopped after two coupling steps (not converged) together, and checks
 // 1. the batch's exit code (the worst: 2), the table's rows (one per joint
-//    of each case, one for a case without figures) and each row's status;
+//    of each case, one for a case without figures) and each row's status,
+//    two cases at a time (--jobs 2) and one at a time (the same rows);
 // 2. each converged case's mean pressures and steps against the same file
 //    run on its own (identical: the same process runs it the same way);
 // 3. the directories: written for every case but the bad one;
@@ -98,8 +99,8 @@ main()
 
   // 1. The batch.
   const RunResult r = run_command(
-    std::string("timeout 120 ") + coaxfit_executable + " --quiet " + rings + " "
-    + gear + " " + bad + " " + stopped + " 2>&1 >/dev/null");
+    std::string("timeout 120 ") + coaxfit_executable + " --quiet --jobs 2 "
+    + rings + " " + gear + " " + bad + " " + stopped + " 2>&1 >/dev/null");
   std::cout << "1. four stack files: exit code " << r.exit_code << ", "
             << r.lines << " lines on standard error\n";
   const auto  rows = read_csv(out + "/cases.csv");
@@ -120,6 +121,23 @@ main()
       if (!rows[i][6].empty())
         by_joint[name + " " + rows[i][6]] = rows[i];
     }
+
+  // 1b. The cases one at a time (--jobs 1): the same rows (wall times
+  // aside) and exit code.
+  {
+    const std::string table = base + "/one_job.csv";
+    const RunResult   one
+      = run_command(std::string("timeout 120 ") + coaxfit_executable
+                    + " --quiet --jobs 1 --table " + table + " " + rings + " "
+                    + gear + " " + bad + " " + stopped + " 2>&1 >/dev/null");
+    auto one_rows = read_csv(table), two_rows = rows;
+    for (auto *t : {&one_rows, &two_rows})
+      for (auto &row : *t)
+        if (row.size() > 5)
+          row[5].clear(); // wall_s
+    std::cout << "1b. --jobs 1: exit code " << one.exit_code << ", rows "
+              << (one_rows == two_rows ? "the same" : "DIFFERENT") << '\n';
+  }
 
   // 2. Each converged case against the file run on its own.
   for (const auto &[name, file] :

@@ -336,6 +336,32 @@ main()
                    1e-6)
       << " (1e-6)\n";
     verdict(axial);
+    // Friction coefficient = auto: DIN 7190-1's value of each joint's
+    // pairing and Design/Joining; the torque capacity nu p_mean pi D^2 l
+    // / 2 with it.
+    for (const std::string &options :
+         {std::string("--set 'Material/Sleeve/Name=CuSn8' --set "
+                      "'Fit/Sleeve-Hub/Friction coefficient=0.1'"),
+          std::string("--set 'Design/Joining=shrink degreased'")})
+      {
+        std::cout << "  Fit/Friction coefficient = auto, " << options << ":\n";
+        const nlohmann::json a
+          = run_example("auto",
+                        "--set 'Fit/Friction coefficient=auto' " + options);
+        for (const auto &j : a["joints"])
+          {
+            const double D = j["diameter"], p = j["pressure"]["mean"],
+                         mu = j["design"]["friction_coefficient"];
+            std::cout << "    " << j["name"].get<std::string>() << ": " << mu
+                      << " ("
+                      << j["design"]["friction_source"].get<std::string>()
+                      << "), torque capacity "
+                      << agreement(j["design"]["torque_capacity"],
+                                   mu * p * M_PI * D * D * 60. / 2. / 1000.,
+                                   1e-9)
+                      << '\n';
+          }
+      }
     // The hub's hoop stress at its bore, p1 (b^2 + a^2) / (b^2 - a^2).
     const double hoop_hub
       = p1 * (80. * 80. + 45. * 45.) / (80. * 80. - 45. * 45.);
@@ -492,6 +518,11 @@ main()
         std::string("--set 'Design/Slip safety=0.5'"),
         std::string("--set 'Design/Required axial force=2000'"),
         std::string("--set 'Design/Application factor=0.8'"),
+        std::string("--set 'Fit/Friction coefficient=auto' --set "
+                    "'Material/Sleeve/Name=CuSn8' --set 'Material/Hub/Name=EN "
+                    "AW-6082 T6'"),
+        std::string("--set 'Fit/Sleeve-Hub/Friction coefficient=0.5x'"),
+        std::string("--set 'Design/Joining=glued'"),
         std::string("--set 'Fit/Sleeve-Hub/Outer roughness Rz=-1'"),
         std::string("--set 'Fit/Shaft-Sleeve/Diametral interference=-0.5' "
                     "--set 'Fit/Inner roughness Rz=400'"),

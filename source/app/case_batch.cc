@@ -4,6 +4,7 @@
 #include <coaxfit/app/coaxial_fit.h>
 #include <coaxfit/app/fit_case_study.h>
 #include <coaxfit/app/fit_selection_study.h>
+#include <coaxfit/app/process_pool.h>
 #include <coaxfit/app/resources.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/base/input_error.h>
@@ -209,100 +210,6 @@ namespace coaxfit
 
 
 
-  namespace
-  {
-    /** An anonymous file for what a child prints and reports. */
-    int
-    anonymous_file(const char *name)
-    {
-      const int fd = ::memfd_create(name, MFD_CLOEXEC);
-      if (fd < 0)
-        throw ResourceError(std::string("cannot create a buffer for a case: ")
-                            + std::strerror(errno));
-      return fd;
-    }
-
-    /** Everything written to @p fd, from its start. */
-    std::string
-    contents(const int fd)
-    {
-      std::string text;
-      char        buffer[65536];
-      ::lseek(fd, 0, SEEK_SET);
-      for (;;)
-        {
-          const ssize_t n = ::read(fd, buffer, sizeof(buffer));
-          if (n < 0 && errno == EINTR)
-            continue;
-          if (n <= 0)
-            break;
-          text.append(buffer, n);
-        }
-      return text;
-    }
-
-    /** The last non-empty line of @p text. */
-    std::string
-    last_line(const std::string &text)
-    {
-      std::istringstream s(text);
-      std::string        line, last;
-      while (std::getline(s, line))
-        if (!line.empty())
-          last = line;
-      return last;
-    }
-
-    /**
-     * The child's work: run the case with its output going to @p out_fd,
-     * @p err_fd and its figures to @p row_fd; never returns. It ends when
-     * the process @p parent does.
-     */
-    [[noreturn]] void
-    run_child(const BatchCase &c,
-              const int        parent,
-              const bool       one_thread,
-              const bool       verbose,
-              const int        out_fd,
-              const int        err_fd,
-              const int        row_fd)
-    {
-      int code = 3;
-      try
-        {
-          Interruption::restart_after_fork(parent);
-          if (::dup2(out_fd, STDOUT_FILENO) < 0
-              || ::dup2(err_fd, STDERR_FILENO) < 0)
-            _exit(3);
-          if (one_thread)
-            dealii::MultithreadInfo::set_thread_limit(1);
-          code = exit_code_of(
-            [&]() {
-              const CaseFigures figures = run_case(
-                *c.parameters, std::cout, verbose, c.directory, c.prepared);
-              std::cout.flush();
-              const std::string row = figures.serialize();
-              if (::write(row_fd, row.data(), row.size())
-                  != static_cast<ssize_t>(row.size()))
-                throw ResourceError("cannot pass the figures of the case on");
-              if (!figures.converged)
-                std::cerr << not_converged_message(*c.parameters) << std::endl;
-              return figures.converged ? 0 : 2;
-            },
-            std::cerr);
-        }
-      catch (...)
-        {
-          code = 3;
-        }
-      std::cout.flush();
-      std::cerr.flush();
-      _exit(code);
-    }
-  } // namespace
-
-
-
   CaseBatch::CaseBatch(const unsigned int jobs,
                        const bool         verbose,
                        std::ostream      &out,
@@ -318,145 +225,40 @@ namespace coaxfit
   std::vector<CaseOutcome>
   CaseBatch::run(const std::vector<BatchCase> &cases)
   {
-    using Clock = std::chrono::steady_clock;
-    struct Running
-    {
-      unsigned int      index;
-      int               out_fd, err_fd, row_fd;
-      Clock::time_point start;
-    };
+    std::vector<PoolTask> tasks;
+    for (const BatchCase &c : cases)
+      tasks.push_back(
+        {c.label,
+         c.parameters ? std::string() : "coaxfit: error: " + c.input_error,
+         c.parameters && c.directory.empty() ?
+           c.parameters->output_directory() :
+           std::string()});
+    const std::vector<PoolResult> results
+      = ProcessPool(jobs, verbose, out, err)
+          .run(tasks, [&](const unsigned int i, std::string &row) {
+            const BatchCase &c = cases[i];
+            return exit_code_of(
+              [&]() {
+                const CaseFigures figures = run_case(
+                  *c.parameters, std::cout, verbose, c.directory, c.prepared);
+                std::cout.flush();
+                row = figures.serialize();
+                if (!figures.converged)
+                  std::cerr << not_converged_message(*c.parameters)
+                            << std::endl;
+                return figures.converged ? 0 : 2;
+              },
+              std::cerr);
+          });
     std::vector<CaseOutcome> outcomes(cases.size());
-    std::vector<std::string> printed_out(cases.size()),
-      printed_err(cases.size());
-    std::vector<bool>      done(cases.size(), false);
-    std::map<int, Running> running; // by process id
-    unsigned int           next = 0, next_to_print = 0;
-    const bool             one_thread = jobs > 1 && cases.size() > 1;
-
-    auto print_finished = [&]() {
-      while (next_to_print < cases.size() && done[next_to_print])
-        {
-          if (verbose)
-            out << printed_out[next_to_print];
-          out.flush();
-          std::istringstream lines(printed_err[next_to_print]);
-          for (std::string line; std::getline(lines, line);)
-            err << cases[next_to_print].label << ": " << line << '\n';
-          err.flush();
-          ++next_to_print;
-        }
-    };
-
-    while (next < cases.size() || !running.empty())
+    for (unsigned int i = 0; i < cases.size(); ++i)
       {
-        // Start cases while there are cores for them.
-        while (next < cases.size() && running.size() < jobs)
-          {
-            const unsigned int i = next++;
-            const BatchCase   &c = cases[i];
-            if (!c.parameters)
-              {
-                outcomes[i].exit_code = 1;
-                outcomes[i].error     = "coaxfit: error: " + c.input_error;
-                printed_err[i]        = outcomes[i].error + '\n';
-                done[i]               = true;
-                continue;
-              }
-            Running r{i,
-                      anonymous_file("coaxfit-case-out"),
-                      anonymous_file("coaxfit-case-err"),
-                      anonymous_file("coaxfit-case-row"),
-                      Clock::now()};
-            out.flush();
-            err.flush();
-            std::cout.flush();
-            std::cerr.flush();
-            std::unique_lock<std::mutex> lock(Interruption::mutex());
-            const pid_t                  parent = ::getpid();
-            const pid_t                  pid    = ::fork();
-            if (pid == 0)
-              {
-                lock.unlock();
-                run_child(
-                  c, parent, one_thread, verbose, r.out_fd, r.err_fd, r.row_fd);
-              }
-            if (pid < 0)
-              {
-                const int error = errno;
-                lock.unlock();
-                for (const int fd : {r.out_fd, r.err_fd, r.row_fd})
-                  ::close(fd);
-                outcomes[i].exit_code = 3;
-                outcomes[i].error = std::string("coaxfit: error: cannot start "
-                                                "a process for the case: ")
-                                    + std::strerror(error);
-                printed_err[i] = outcomes[i].error + '\n';
-                done[i]        = true;
-                continue;
-              }
-            Interruption::add_child(pid);
-            lock.unlock();
-            running.emplace(pid, r);
-          }
-        print_finished();
-        if (running.empty())
-          continue;
-
-        // Wait for any case to end.
-        int         status = 0;
-        const pid_t pid    = ::waitpid(-1, &status, 0);
-        if (pid < 0)
-          {
-            if (errno == EINTR)
-              continue;
-            throw std::runtime_error(std::string("waiting for a case: ")
-                                     + std::strerror(errno));
-          }
-        const auto found = running.find(pid);
-        if (found == running.end())
-          continue; // not a case (e.g. a helper of the libraries)
-        {
-          std::lock_guard<std::mutex> lock(Interruption::mutex());
-          Interruption::remove_child(pid);
-        }
-        const Running r       = found->second;
-        CaseOutcome  &outcome = outcomes[r.index];
-        running.erase(found);
-        outcome.wall
-          = std::chrono::duration<double>(Clock::now() - r.start).count();
-        printed_out[r.index]  = contents(r.out_fd);
-        printed_err[r.index]  = contents(r.err_fd);
-        const std::string row = contents(r.row_fd);
-        for (const int fd : {r.out_fd, r.err_fd, r.row_fd})
-          ::close(fd);
-        if (WIFEXITED(status))
-          outcome.exit_code = WEXITSTATUS(status);
-        else
-          {
-            // Killed (e.g. by the kernel's out-of-memory killer): the case
-            // could not clean up; its staging directory is removed here (a
-            // case of a study writes into the study's, removed below).
-            outcome.exit_code  = 3;
-            const BatchCase &c = cases[r.index];
-            if (c.directory.empty())
-              {
-                std::error_code ignored;
-                std::filesystem::remove_all(
-                  staging_directory_of(c.parameters->output_directory(), pid),
-                  ignored);
-              }
-            printed_err[r.index]
-              += "coaxfit: error: the case's process was killed by signal "
-                 + std::to_string(WTERMSIG(status)) + " ("
-                 + strsignal(WTERMSIG(status)) + ")\n";
-          }
-        outcome.error = last_line(printed_err[r.index]);
-        if (!row.empty())
-          outcome.figures = CaseFigures::parse(row);
-        done[r.index] = true;
-        print_finished();
+        outcomes[i].exit_code = results[i].exit_code;
+        outcomes[i].wall      = results[i].wall;
+        outcomes[i].error     = results[i].error;
+        if (!results[i].row.empty())
+          outcomes[i].figures = CaseFigures::parse(results[i].row);
       }
-    print_finished();
     return outcomes;
   }
 

@@ -290,12 +290,12 @@ namespace
 
 
   /**
-   * Several stack files (Assembly/Bodies): one case each, run one after
-   * the other by a StackBatch; the table printed and written; the batch's
-   * exit code.
+   * Several stack files (Assembly/Bodies): one case each, run by a
+   * StackBatch (at most @p jobs at a time); the table printed and written;
+   * the batch's exit code.
    */
   int
-  run_stack_files(const CommandLine &line)
+  run_stack_files(const CommandLine &line, const unsigned int jobs)
   {
     using namespace coaxfit;
     std::vector<StackCase>   cases(line.filenames.size());
@@ -326,7 +326,7 @@ namespace
       }
     const std::string table = batch_table(line, targets, inputs);
     const std::vector<StackCaseOutcome> outcomes
-      = StackBatch(!line.quiet, std::cout, std::cerr).run(cases);
+      = StackBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
     std::cout << "\ncoaxfit: " << cases.size() << " stack cases\n";
     StackBatch::print_table(std::cout, cases, outcomes);
     write_table(table, StackBatch::table_csv(cases, outcomes));
@@ -466,7 +466,7 @@ namespace
                   "commands (their tables differ); nothing was run");
             if (!stacks.empty())
               {
-                const int code = run_stack_files(line);
+                const int code = run_stack_files(line, jobs);
                 check_standard_output();
                 return code;
               }

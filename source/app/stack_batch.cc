@@ -1,9 +1,12 @@
+#include <coaxfit/app/process_pool.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/app/stack_batch.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <chrono>
 #include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace coaxfit
@@ -27,28 +30,80 @@ namespace coaxfit
         }
     }
 
-    /** The last non-empty line of @p text. */
+    /** @p line without a leading "coaxfit: error: ". */
     std::string
-    last_line(const std::string &text)
+    without_prefix(const std::string &line)
     {
-      std::istringstream in(text);
-      std::string        line, last;
-      while (std::getline(in, line))
-        if (!line.empty())
-          last = line;
       const std::string prefix = "coaxfit: error: ";
-      return last.compare(0, prefix.size(), prefix) == 0 ?
-               last.substr(prefix.size()) :
-               last;
+      return line.compare(0, prefix.size(), prefix) == 0 ?
+               line.substr(prefix.size()) :
+               line;
     }
   } // namespace
 
 
 
-  StackBatch::StackBatch(const bool    verbose,
-                         std::ostream &out,
-                         std::ostream &err)
-    : verbose(verbose)
+  std::string
+  StackCaseOutcome::serialize() const
+  {
+    nlohmann::json j;
+    j["verdict"]    = verdict;
+    j["steps"]      = steps;
+    j["fits"]       = fits;
+    j["joint_fits"] = joint_fits;
+    j["joints"]     = nlohmann::json::array();
+    for (const JointFigures &f : joints)
+      j["joints"].push_back({{"name", f.name},
+                             {"diameter", f.diameter},
+                             {"p_mid", f.p_mid},
+                             {"p_mean", f.p_mean},
+                             {"p_min", f.p_min},
+                             {"p_max", f.p_max},
+                             {"closed", f.closed},
+                             {"slip_safety", f.slip_safety}});
+    // Every digit, so that the table equals a single run's figures.
+    return j.dump() + '\n';
+  }
+
+
+
+  void
+  StackCaseOutcome::parse(const std::string &text)
+  {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    verdict                = j["verdict"];
+    steps                  = j["steps"];
+    fits                   = j["fits"];
+    joint_fits             = j["joint_fits"].get<std::vector<std::string>>();
+    joints.clear();
+    // JSON writes a figure that is not a number as null.
+    const auto value = [](const nlohmann::json &x) {
+      return x.is_number() ? x.get<double>() :
+                             std::numeric_limits<double>::quiet_NaN();
+    };
+    for (const auto &f : j["joints"])
+      {
+        JointFigures figures;
+        figures.name        = f["name"];
+        figures.diameter    = value(f["diameter"]);
+        figures.p_mid       = value(f["p_mid"]);
+        figures.p_mean      = value(f["p_mean"]);
+        figures.p_min       = value(f["p_min"]);
+        figures.p_max       = value(f["p_max"]);
+        figures.closed      = f["closed"];
+        figures.slip_safety = value(f["slip_safety"]);
+        joints.push_back(figures);
+      }
+  }
+
+
+
+  StackBatch::StackBatch(const unsigned int jobs,
+                         const bool         verbose,
+                         std::ostream      &out,
+                         std::ostream      &err)
+    : jobs(jobs)
+    , verbose(verbose)
     , out(out)
     , err(err)
   {}
@@ -58,72 +113,74 @@ namespace coaxfit
   std::vector<StackCaseOutcome>
   StackBatch::run(const std::vector<StackCase> &cases) const
   {
+    std::vector<PoolTask> tasks;
+    for (const StackCase &c : cases)
+      tasks.push_back(
+        {c.label,
+         c.parameters ? std::string() : "coaxfit: error: " + c.input_error,
+         c.parameters ? c.parameters->output_directory() : std::string()});
+    const std::vector<PoolResult> results
+      = ProcessPool(jobs, verbose, out, err)
+          .run(tasks, [&](const unsigned int i, std::string &row) {
+            const StackCase   &c = cases[i];
+            StackCaseOutcome   o;
+            std::ostringstream discarded; // --quiet: only the table
+            std::ostream      &case_out = verbose ? std::cout : discarded;
+            const int          code     = exit_code_of(
+              [&]() {
+                StackFit fit(*c.parameters);
+                // What the case computed, also if writing it failed.
+                const auto record = [&]() {
+                  const auto selection = fit.get_selection();
+                  o.joints             = fit.joint_figures();
+                  o.steps              = fit.n_steps();
+                  for (const JointFit &f : fit.get_parameters().fits)
+                    o.joint_fits.push_back(f.source);
+                  if (!o.joints.empty() || selection)
+                    o.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
+                  if (selection && selection->found())
+                    {
+                      std::vector<std::string> names;
+                      for (const IsoFit &f : selection->chosen)
+                        names.push_back(f.name);
+                      o.fits = part_text(names);
+                    }
+                  row = o.serialize();
+                };
+                int code = 0;
+                try
+                  {
+                    code = fit.run(case_out, verbose);
+                  }
+                catch (...)
+                  {
+                    record();
+                    throw;
+                  }
+                record();
+                if (code == 2)
+                  std::cerr
+                    << "coaxfit: the staggered process of the stack did "
+                                    "not converge in Coupling/Max steps = "
+                    << c.parameters->max_steps
+                    << " steps; raise it or set Solver/Method = "
+                                    "monolithic"
+                    << std::endl;
+                return code;
+              },
+              std::cerr);
+            std::cout.flush();
+            return code;
+          });
     std::vector<StackCaseOutcome> outcomes(cases.size());
     for (unsigned int i = 0; i < cases.size(); ++i)
       {
-        const StackCase  &c = cases[i];
         StackCaseOutcome &o = outcomes[i];
-        if (i > 0 && verbose)
-          out << '\n';
-        if (!c.parameters)
-          {
-            o.exit_code = 1;
-            o.error     = c.input_error;
-            out.flush();
-            err << "coaxfit: error: " << c.input_error << std::endl;
-            continue;
-          }
-        const auto         start = std::chrono::steady_clock::now();
-        std::ostringstream errors;
-        // --quiet: only the table.
-        std::ostringstream discarded;
-        std::ostream      &case_out = verbose ? out : discarded;
-        o.exit_code                 = exit_code_of(
-          [&]() {
-            StackFit fit(*c.parameters);
-            // What the case computed, also if writing it failed.
-            const auto record = [&]() {
-              const auto selection = fit.get_selection();
-              o.joints             = fit.joint_figures();
-              o.bodies             = fit.body_figures();
-              o.steps              = fit.n_steps();
-              for (const JointFit &f : fit.get_parameters().fits)
-                o.joint_fits.push_back(f.source);
-              if (!o.joints.empty() || selection)
-                o.verdict = fit.get_verdict().ok() ? "OK" : "FAILED";
-              if (selection && selection->found())
-                {
-                  std::vector<std::string> names;
-                  for (const IsoFit &f : selection->chosen)
-                    names.push_back(f.name);
-                  o.fits = part_text(names);
-                }
-            };
-            int code = 0;
-            try
-              {
-                code = fit.run(case_out, verbose);
-              }
-            catch (...)
-              {
-                record();
-                throw;
-              }
-            record();
-            if (code == 2)
-              errors << "coaxfit: the staggered process of the stack did "
-                                        "not converge in Coupling/Max steps = "
-                     << c.parameters->max_steps
-                     << " steps; raise it or set Solver/Method = monolithic\n";
-            return code;
-          },
-          errors);
-        o.wall = std::chrono::duration<double>(std::chrono::steady_clock::now()
-                                               - start)
-                   .count();
-        out.flush();
-        err << errors.str() << std::flush;
-        o.error = last_line(errors.str());
+        if (!results[i].row.empty())
+          o.parse(results[i].row);
+        o.exit_code = results[i].exit_code;
+        o.wall      = results[i].wall;
+        o.error     = without_prefix(results[i].error);
       }
     return outcomes;
   }

@@ -1498,7 +1498,11 @@ namespace coaxfit
         {
           out << "  " << f.name << ": torque capacity " << std::setprecision(6)
               << f.torque_capacity << " N m (friction coefficient "
-              << f.friction_coefficient << ")";
+              << f.friction_coefficient;
+          const JointFit &fit = parameters.fits[&f - &joints_out[0]];
+          if (fit.friction_text == "auto")
+            out << ", " << fit.friction_source;
+          out << ")";
           if (parameters.slip_judged())
             out << ", safety against slip " << f.slip_safety << " at "
                 << parameters.required_loads_text()

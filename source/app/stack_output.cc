@@ -331,6 +331,9 @@ namespace coaxfit
         const unsigned int k = &f - &joints_out[0];
         joints_json.push_back(joint_json(f, parameters.slip_judged()));
         joints_json.back()["fit"] = parameters.fits[k].source;
+        if (f.friction_coefficient > 0.)
+          joints_json.back()["design"]["friction_source"]
+            = parameters.fits[k].friction_source;
         if (has_loads())
           {
             const JointFigures &a = joints_assembly[k];

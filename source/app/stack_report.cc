@@ -213,6 +213,11 @@ namespace coaxfit
                    design_figure(f.friction_coefficient) :
                    std::string("not given"))
              << " | " << slip_cells(f, p.slip_judged()) << " |\n";
+        for (unsigned int k = 0; k < joints_out.size(); ++k)
+          if (p.fits[k].friction_text == "auto")
+            md << "\n"
+               << p.joint_name(k) << ": friction coefficient from "
+               << p.fits[k].friction_source << ".\n";
         if (p.slip_judged())
           md << "\nThe loads " << p.required_loads_text()
              << " pass through every joint (Design/Required torque, "

@@ -381,15 +381,23 @@ namespace coaxfit
                         + " (see Inner roughness Rz). 0: Fit's value. "
                           "Allowed: 0 to 1000.",
                       Patterns::Double(0., 1000.));
-    prm.add_parameter("Friction coefficient",
-                      friction_coefficient,
-                      "Friction coefficient nu_r of " + what
-                        + " in the circumferential direction, for the "
-                          "torque capacity T = nu_r p_mean pi D^2 l / 2 "
-                          "(DIN 7190-1); the joint itself is frictionless "
-                          "in the model. 0: not given (no torque figures). "
-                          "Allowed: 0 to 1.",
-                      Patterns::Double(0., 1.));
+    prm.add_parameter(
+      "Friction coefficient",
+      friction_text,
+      "Friction coefficient nu_r of " + what
+        + " against slip, for the torque capacity T = nu_r p_mean pi D^2 l / "
+          "2 and the axial force capacity nu_r p_mean pi D l (DIN 7190-1); "
+          "the joint itself is frictionless in the model. auto: DIN "
+          "7190-1's value for the pairing of the two bodies' Material Names "
+          "and Design/Joining (steel on steel 0.14 shrunk, 0.20 degreased, "
+          "0.12 by pressure oil; steel on cast iron 0.10; on light alloys "
+          "0.10; on copper alloys 0.17; a body without a Name taken as "
+          "steel; pairings without steel have no value). "
+        + (what.compare(0, 9, "the joint") == 0 ?
+             "0: Fit's value. " :
+             "0: not given (no torque figures). ")
+        + "Allowed: auto, 0 or a number from 1e-6 to 1.",
+      Patterns::Anything());
     // Fit's own value has a default; a joint's 0 takes Fit's.
     const bool joint_entry = press_in_friction_coefficient == 0.;
     prm.add_parameter(
@@ -608,6 +616,16 @@ namespace coaxfit
       "against slip is taken against those). 1: the loads as given; shocks "
       "ask more (DIN 3990: 1.25 to 2.25). Dimensionless. Allowed: 1 to 10.",
       Patterns::Double(1., 10.));
+    prm.add_parameter(
+      "Joining",
+      joining_text,
+      "How the joints are made, for the friction coefficients given as "
+      "auto (DIN 7190-1): shrink (the outer part heated or the inner "
+      "cooled, surfaces as machined), shrink degreased, pressure oil, "
+      "pressure oil degreased, press (pressed in lengthwise: the oiled "
+      "pressure oil value). Allowed: "
+        + joining_method_names() + " ('|' separates them).",
+      Patterns::Selection(joining_method_names()));
     prm.add_parameter(
       "Slip safety",
       slip_safety,
@@ -1265,6 +1283,87 @@ namespace coaxfit
 
 
 
+  namespace
+  {
+    /**
+     * The friction coefficient of joint @p k of @p p into @p fit: its own
+     * entry @p entries unless 0, else Fit's; `auto` DIN 7190-1's value of
+     * the two bodies' materials and Design/Joining.
+     * @throws InputError naming the entry and what is allowed.
+     */
+    void
+    resolve_friction(const StackParameters &p,
+                     const unsigned int     k,
+                     const JointFit        &entries,
+                     JointFit              &fit)
+    {
+      const bool        own = trimmed(entries.friction_text) != "0";
+      const std::string text
+        = trimmed(own ? entries.friction_text : p.default_fit.friction_text);
+      const std::string entry
+        = own ? "Fit/" + p.joint_name(k) + "/Friction coefficient" :
+                std::string("Fit/Friction coefficient");
+      fit.friction_text = text;
+      if (text == "auto")
+        {
+          try
+            {
+              const FrictionValue value
+                = din7190_friction(p.materials[k].family,
+                                   p.materials[k + 1].family,
+                                   p.joining);
+              fit.friction_coefficient = value.coefficient;
+              // The table's words are a shaft's and a hub's.
+              std::string source = value.source;
+              for (const auto &[generic, body] :
+                   {std::make_pair(std::string("shaft and hub"),
+                                   p.bodies[k] + " and " + p.bodies[k + 1]),
+                    std::make_pair(std::string("; shaft without"),
+                                   "; " + p.bodies[k] + " without"),
+                    std::make_pair(std::string("; hub without"),
+                                   "; " + p.bodies[k + 1] + " without")})
+                if (const std::size_t at = source.find(generic);
+                    at != std::string::npos)
+                  source.replace(at, generic.size(), body);
+              fit.friction_source = source + "; " + entry + " = auto";
+            }
+          catch (const InputError &)
+            {
+              throw InputError(
+                "parameter " + entry
+                + " = auto: DIN 7190-1 tabulates the "
+                  "coefficient of friction for pairings with steel, not for "
+                + to_string(p.materials[k].family) + " (" + p.bodies[k]
+                + ") in " + to_string(p.materials[k + 1].family) + " ("
+                + p.bodies[k + 1] + ") at the joint " + p.joint_name(k)
+                + "; allowed is a number from 1e-6 to 1 (the value of your "
+                  "tests)");
+            }
+          return;
+        }
+      // A plain decimal number (no hexadecimal, no words).
+      std::size_t end = 0;
+      double      mu  = std::numeric_limits<double>::quiet_NaN();
+      if (!text.empty()
+          && text.find_first_not_of("0123456789.eE+-") == std::string::npos)
+        try
+          {
+            mu = std::stod(text, &end);
+          }
+        catch (const std::exception &)
+          {}
+      if (end != text.size() || !(mu == 0. || (mu >= 1e-6 && mu <= 1.)))
+        throw InputError("parameter " + entry + " = '" + text
+                         + "' is not allowed: allowed is auto, 0 ("
+                         + (own ? "Fit's value" : "not given")
+                         + ") or a number from 1e-6 to 1");
+      fit.friction_coefficient = mu;
+      fit.friction_source      = mu > 0. ? entry : std::string();
+    }
+  } // namespace
+
+
+
   StackParameters
   read_stack_parameters(
     const std::string                                      &filename,
@@ -1364,6 +1463,7 @@ namespace coaxfit
                        + ": give either Fit/Diametral interference or "
                          "Fit/ISO fit, not both");
     // Design/Mode = select: the joints whose fits are chosen.
+    p.joining = joining_method(p.joining_text);
     std::set<std::string> listed;
     const bool            all_listed = p.selected_text == "all";
     if (p.select_mode() && !all_listed
@@ -1469,9 +1569,7 @@ namespace coaxfit
                              && (own_given || default_given)
                              && fit.diametral_interference <= 0.);
         // A friction coefficient given for the joint wins over Fit's.
-        fit.friction_coefficient = entries.friction_coefficient > 0. ?
-                                     entries.friction_coefficient :
-                                     p.default_fit.friction_coefficient;
+        resolve_friction(p, k, entries, fit);
         // So does a roughness; the smoothing loss (DIN 7190-1) is taken
         // off the nominal interference.
         fit.inner_roughness = entries.inner_roughness > 0. ?
@@ -1528,6 +1626,9 @@ namespace coaxfit
                  + without_entries(text.str(), entries_not_set(prm));
     return p;
   }
+
+
+
   std::string
   StackParameters::required_loads_text() const
   {

@@ -27,27 +27,38 @@ namespace coaxfit
     std::string               error;          ///< its last error line
     std::string               verdict;        ///< OK, FAILED; empty: none
     unsigned int              steps = 0;
-    std::vector<JointFigures> joints; ///< empty: nothing computed
-    std::vector<BodyFigures>  bodies;
+    std::vector<JointFigures> joints;     ///< empty: nothing computed
     std::string               fits;       ///< a selection's chosen fits
     std::vector<std::string>  joint_fits; ///< where each joint's fit is from
+
+    /**
+     * The figures of the table as one line of text (JSON), passed from a
+     * case's process to the batch's; read back by parse().
+     */
+    std::string
+    serialize() const;
+    void
+    parse(const std::string &text);
   };
 
   /**
    * Several stack files (Assembly/Bodies) in one command: `coaxfit A.prm
    * B.prm`. Each file runs as it would on its own, into its own
-   * Output/Directory, one after the other in this process (a stack's run
-   * takes a second or so; the sweep of a stack does the same). A case that
-   * fails (bad input, not converged, out of memory, disk full) ends alone:
+   * Output/Directory, in a process of its own (ProcessPool, as the cases
+   * of two bodies), at most `--jobs` at a time. A case that fails (bad
+   * input, not converged, out of memory, disk full, a crash) ends alone:
    * its row says how, the others run on; an interrupt ends the batch with
-   * the cases done in place and the running one's results not written.
+   * the cases done in place and the running ones' results not written.
    * The table has one row per joint of each case (the cases' body lists
    * differ).
    */
   class StackBatch
   {
   public:
-    StackBatch(bool verbose, std::ostream &out, std::ostream &err);
+    StackBatch(unsigned int  jobs,
+               bool          verbose,
+               std::ostream &out,
+               std::ostream &err);
 
     /** Run every case; their outcomes in the same order. */
     std::vector<StackCaseOutcome>
@@ -72,8 +83,9 @@ namespace coaxfit
     exit_code(const std::vector<StackCaseOutcome> &outcomes);
 
   private:
-    const bool    verbose;
-    std::ostream &out, &err;
+    const unsigned int jobs;
+    const bool         verbose;
+    std::ostream      &out, &err;
   };
 } // namespace coaxfit
 

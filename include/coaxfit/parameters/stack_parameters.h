@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <coaxfit/fe/stack_sections.h>
+#include <coaxfit/parameters/friction.h>
 #include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/parameters.h>
 
@@ -53,7 +54,19 @@ namespace coaxfit
     /** The largest interference (mm, derived): an ISO fit's, else U. */
     double largest_interference = 0.;
     double smoothing_loss       = 0.; ///< 0.8 (Rz_i + Rz_o), mm
-    double friction_coefficient = 0.; ///< 0: not given (no torque figures)
+    /**
+     * nu_r against slip (derived from friction_text): 0: not given (no
+     * torque figures).
+     */
+    double friction_coefficient = 0.;
+    /**
+     * `Friction coefficient` as written: a number, `auto` (DIN 7190-1's
+     * value of the pairing and Design/Joining) or 0 (a joint's own: Fit's
+     * value; Fit's: not given).
+     */
+    std::string friction_text = "0";
+    /** Where friction_coefficient comes from, for the report (derived). */
+    std::string friction_source;
     /**
      * DIN 7190's nu_e while the joint is pressed lengthwise, for its
      * press-in force; 0 in a joint's own entries: Fit's.
@@ -174,6 +187,12 @@ namespace coaxfit
     double required_axial_force = 0.;
     /** Design/Application factor K_A of both loads. */
     double application_factor = 1.;
+    /**
+     * Design/Joining: how the joints are made, for the friction
+     * coefficients given as `auto`.
+     */
+    JoiningMethod joining      = JoiningMethod::shrink;
+    std::string   joining_text = "shrink"; ///< as written
 
     /** Whether slip is judged: a Required torque or axial force. */
     bool

@@ -342,7 +342,9 @@ main()
     for (const std::string &options :
          {std::string("--set 'Material/Sleeve/Name=CuSn8' --set "
                       "'Fit/Sleeve-Hub/Friction coefficient=0.1'"),
-          std::string("--set 'Design/Joining=shrink degreased'")})
+          std::string("--set 'Design/Joining=shrink degreased' --set "
+                      "'Material/Sleeve/Name=C45' --set "
+                      "'Material/Hub/Name=S355'")})
       {
         std::cout << "  Fit/Friction coefficient = auto, " << options << ":\n";
         const nlohmann::json a
@@ -362,6 +364,39 @@ main()
                       << '\n';
           }
       }
+    // A running fit (bushing_in_housing.prm: the shaft with clearance in
+    // the bushing) passes no load: its slip is not judged, the bushing's
+    // seat in the housing is.
+    {
+      std::cout << "  bushing_in_housing.prm, Required torque 300 N m, axial "
+                   "force 5000 N, Friction coefficient 0.12:\n";
+      std::filesystem::remove_all("bushing");
+      const RunResult r = run_coaxfit(
+        "bushing",
+        "--set 'Design/Required torque=300' --set 'Design/Required axial "
+        "force=5000' --set 'Fit/Friction coefficient=0.12' "
+          + std::string(COAXFIT_SOURCE_DIR)
+          + "/prm/examples/bushing_in_housing.prm");
+      const nlohmann::json b = read_summary("bushing");
+      std::cout << "    exit code " << r.exit_code;
+      for (const auto &j : b["joints"])
+        {
+          std::cout << "; " << j["name"].get<std::string>() << ": ";
+          if (!j["design"].contains("slip_safety"))
+            std::cout << "slip not judged";
+          else
+            std::cout
+              << "safety against slip "
+              << agreement(j["design"]["slip_safety"],
+                           j["design"]["axial_force_capacity"].get<double>()
+                             / std::hypot(2e3 * 300.
+                                            / j["diameter"].get<double>(),
+                                          5000.),
+                           1e-9);
+        }
+      std::cout << '\n';
+      verdict(b);
+    }
     // The hub's hoop stress at its bore, p1 (b^2 + a^2) / (b^2 - a^2).
     const double hoop_hub
       = p1 * (80. * 80. + 45. * 45.) / (80. * 80. - 45. * 45.);
@@ -522,6 +557,7 @@ main()
                     "'Material/Sleeve/Name=CuSn8' --set 'Material/Hub/Name=EN "
                     "AW-6082 T6'"),
         std::string("--set 'Fit/Sleeve-Hub/Friction coefficient=0.5x'"),
+        std::string("--set 'Fit/Friction coefficient=auto'"),
         std::string("--set 'Design/Joining=glued'"),
         std::string("--set 'Fit/Sleeve-Hub/Outer roughness Rz=-1'"),
         std::string("--set 'Fit/Shaft-Sleeve/Diametral interference=-0.5' "

@@ -767,7 +767,7 @@ namespace coaxfit
                         * f.diameter * joint.length() / 2. / 1000.;
     // Against DIN 7190's resultant of both loads (as a torque at D).
     f.slip_safety
-      = parameters.slip_judged() ?
+      = parameters.slip_judged(k) ?
           f.torque_capacity / parameters.required_torque_at(f.diameter) :
           0.;
     return f;
@@ -1503,16 +1503,19 @@ namespace coaxfit
           if (fit.friction_text == "auto")
             out << ", " << fit.friction_source;
           out << ")";
-          if (parameters.slip_judged())
+          const unsigned int k = &f - &joints_out[0];
+          if (parameters.slip_judged(k))
             out << ", safety against slip " << f.slip_safety << " at "
                 << parameters.required_loads_text()
                 << (f.slip_safety < 1. ? ": SLIPS" : "");
+          else if (parameters.slip_judged())
+            out << ", a running fit: passes no load, its slip not judged";
           if (has_loads())
             {
               const JointFigures &a = joints_assembly[&f - &joints_out[0]];
               out << "; in the state of assembly " << a.torque_capacity
                   << " N m";
-              if (parameters.slip_judged())
+              if (parameters.slip_judged(k))
                 out << ", safety " << a.slip_safety
                     << (a.slip_safety < 1. ? ": SLIPS" : "");
             }

@@ -329,7 +329,7 @@ namespace coaxfit
     for (const JointFigures &f : joints_out)
       {
         const unsigned int k = &f - &joints_out[0];
-        joints_json.push_back(joint_json(f, parameters.slip_judged()));
+        joints_json.push_back(joint_json(f, parameters.slip_judged(k)));
         joints_json.back()["fit"] = parameters.fits[k].source;
         if (f.friction_coefficient > 0.)
           joints_json.back()["design"]["friction_source"]
@@ -343,7 +343,7 @@ namespace coaxfit
             if (a.friction_coefficient > 0.)
               {
                 assembly["torque_capacity"] = number_or_null(a.torque_capacity);
-                if (parameters.slip_judged())
+                if (parameters.slip_judged(k))
                   assembly["slip_safety"] = a.slip_safety;
               }
             joints_json.back()["assembly"] = assembly;

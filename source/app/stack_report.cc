@@ -98,7 +98,8 @@ namespace coaxfit
              << " | " << design_figure(f.p_max) << " | "
              << (f.closed ? std::string("closed") :
                             std::to_string(f.separated_points) + " points open")
-             << " | " << slip_cells(f, p.slip_judged()) << " |\n";
+             << " | " << slip_cells(f, p.slip_judged(&f - &joints_assembly[0]))
+             << " |\n";
         for (const JointFigures &f : joints_out)
           if (!std::isnan(f.loosening_speed))
             md << "\nLoosening speed of " << f.name << ": "
@@ -212,7 +213,8 @@ namespace coaxfit
              << (f.friction_coefficient > 0. ?
                    design_figure(f.friction_coefficient) :
                    std::string("not given"))
-             << " | " << slip_cells(f, p.slip_judged()) << " |\n";
+             << " | " << slip_cells(f, p.slip_judged(&f - &joints_out[0]))
+             << " |\n";
         for (unsigned int k = 0; k < joints_out.size(); ++k)
           if (p.fits[k].friction_text == "auto")
             md << "\n"

@@ -53,7 +53,7 @@ namespace coaxfit
                      number(f.gap_min, 6) + " mm left")
                 + ", less than " + number(parameters.running_clearance, 6)
                 + " mm (Design/Running clearance)");
-            if (parameters.slip_judged()
+            if (parameters.slip_judged(&f - &state.joints[0])
                 && f.slip_safety < parameters.slip_safety)
               failed.push_back(
                 "slip of the joint " + f.name + state.when

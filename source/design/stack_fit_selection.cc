@@ -146,8 +146,8 @@ namespace coaxfit
     // The criteria, in the order judge() takes them.
     for (unsigned int s = 0; s < n_states; ++s)
       {
-        if (parameters.slip_judged())
-          for (unsigned int k = 0; k < J; ++k)
+        for (unsigned int k = 0; k < J; ++k)
+          if (parameters.slip_judged(k))
             criterion_names.push_back("slip of " + parameters.joint_name(k)
                                       + " " + state_names[s]);
         for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
@@ -274,8 +274,8 @@ namespace coaxfit
     std::vector<std::string>                    names;
     for (unsigned int s = 0; s < n_states; ++s)
       {
-        if (parameters.slip_judged())
-          for (unsigned int k = 0; k < J; ++k)
+        for (unsigned int k = 0; k < J; ++k)
+          if (parameters.slip_judged(k))
             {
               affine.emplace_back(s * per_state + k,
                                   required_torque(k) * parameters.slip_safety);
@@ -473,8 +473,8 @@ namespace coaxfit
     };
     for (unsigned int s = 0; s < n_states; ++s)
       {
-        if (parameters.slip_judged())
-          for (unsigned int k = 0; k < J; ++k)
+        for (unsigned int k = 0; k < J; ++k)
+          if (parameters.slip_judged(k))
             improve(q[o + k] / (required_torque(k) * parameters.slip_safety));
         for (unsigned int i = 0; i < selected.size(); ++i)
           if (!kept[i])
@@ -656,18 +656,18 @@ namespace coaxfit
         std::vector<std::string> names;
         for (unsigned int j = 0; j < J_s; ++j)
           names.push_back(candidates[j][closest.choice[j]].name);
-        conflict
-          = "no combination of the " + std::to_string(n_combinations)
-            + " judged (of " + figure(n_all_combinations, 12)
-            + ") carries the requirement in every state at every "
-              "corner of its bands: "
-            + (std::isfinite(closest.margin) ?
-                 "the closest, " + part_text(names) + ", reaches "
-                   + figure(closest.margin, 4) + " of it ("
-                   + closest.governed_by + ")" :
-                 "in each, a selected joint loses its contact")
-            + "; lower Design/Required torque or the safeties, or change "
-              "the materials or sections";
+        conflict = "no combination of the " + std::to_string(n_combinations)
+                   + " judged (of " + figure(n_all_combinations, 12)
+                   + ") carries the requirement in every state at every "
+                     "corner of its bands: "
+                   + (std::isfinite(closest.margin) ?
+                        "the closest, " + part_text(names) + ", reaches "
+                          + figure(closest.margin, 4) + " of it ("
+                          + closest.governed_by + ")" :
+                        "in each, a selected joint loses its contact")
+                   + "; lower Design/Required torque, Required axial force, "
+                     "Application factor or the safeties, or change "
+                     "the materials or sections";
       }
   }
 
@@ -826,14 +826,14 @@ namespace coaxfit
             for (unsigned int s = 0; s < n_states; ++s)
               {
                 const std::size_t o_s = at;
-                if (parameters.slip_judged())
-                  for (unsigned int k = 0; k < J; ++k, ++name)
+                for (unsigned int k = 0; k < J; ++k)
+                  if (parameters.slip_judged(k))
                     {
                       const double need
                         = required_torque(k) * parameters.slip_safety;
                       linear_bound(a[o_s + k] - need,
                                    b[o_s + k],
-                                   criterion_names[name]);
+                                   criterion_names[name++]);
                     }
                 for (unsigned int i = 0; i < J_s; ++i)
                   if (!kept[i])

@@ -398,18 +398,8 @@ namespace coaxfit
         friction_from_table       = true;
         return;
       }
-    // A plain decimal number (no hexadecimal, no words).
-    std::size_t end = 0;
-    double      mu  = std::numeric_limits<double>::quiet_NaN();
-    if (!text.empty()
-        && text.find_first_not_of("0123456789.eE+-") == std::string::npos)
-      try
-        {
-          mu = std::stod(text, &end);
-        }
-      catch (const std::exception &)
-        {}
-    if (!(mu >= 1e-6 && mu <= 1.) || end != text.size())
+    const double mu = plain_number(text);
+    if (!(mu >= 1e-6 && mu <= 1.))
       throw InputError("parameter Design/Friction coefficient = '"
                        + friction_text
                        + "' is not allowed: allowed is auto or a number "

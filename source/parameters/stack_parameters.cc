@@ -990,7 +990,8 @@ namespace coaxfit
             + " has no friction coefficient (set Fit/Friction coefficient "
               "or Fit/"
             + joint_name(k)
-            + "/Friction coefficient, 0 < nu_r <= 1, for its safety "
+            + "/Friction coefficient: auto or 1e-6 <= nu_r <= 1, for its "
+              "safety "
               "against slip)");
     for (const std::string &surface : report_surfaces)
       {
@@ -1306,6 +1307,28 @@ namespace coaxfit
       fit.friction_text = text;
       if (text == "auto")
         {
+          // A body without a Name is taken as steel: refused where its
+          // entries say it is not (a bronze E of 110000 MPa would get
+          // steel's 0.14 where DIN 7190 gives 0.17, an aluminium hub 0.14
+          // for 0.10: unsafe).
+          for (const unsigned int b : {k, k + 1})
+            {
+              const Material &m = p.materials[b];
+              if (m.family == MaterialFamily::unknown
+                  && (m.E < 180000. || m.E > 230000.
+                      || m.kind == MaterialKind::brittle))
+                throw InputError(
+                  "parameter " + entry + " = auto: " + p.bodies[b]
+                  + " has no Material Name, and auto takes such a body as "
+                    "steel, which its E = "
+                  + number(m.E, 6) + " MPa"
+                  + (m.kind == MaterialKind::brittle ?
+                       " and Kind = brittle contradict" :
+                       " contradicts")
+                  + " (steel: E 180000 to 230000 MPa, "
+                    "ductile); name its material (Material/"
+                  + p.bodies[b] + "/Name) or give the coefficient (1e-6 to 1)");
+            }
           try
             {
               const FrictionValue value
@@ -1341,18 +1364,8 @@ namespace coaxfit
             }
           return;
         }
-      // A plain decimal number (no hexadecimal, no words).
-      std::size_t end = 0;
-      double      mu  = std::numeric_limits<double>::quiet_NaN();
-      if (!text.empty()
-          && text.find_first_not_of("0123456789.eE+-") == std::string::npos)
-        try
-          {
-            mu = std::stod(text, &end);
-          }
-        catch (const std::exception &)
-          {}
-      if (end != text.size() || !(mu == 0. || (mu >= 1e-6 && mu <= 1.)))
+      const double mu = plain_number(text);
+      if (!(mu == 0. || (mu >= 1e-6 && mu <= 1.)))
         throw InputError("parameter " + entry + " = '" + text
                          + "' is not allowed: allowed is auto, 0 ("
                          + (own ? "Fit's value" : "not given")

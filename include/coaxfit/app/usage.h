@@ -58,7 +58,7 @@ namespace coaxfit
       "section (Geometry/<body> section = z, D; ...);\n"
       "summary.json, report.md, contact_pressure_<joint>.csv,\n"
       "interface_<joint>.vtp, <body>.vtu, solution.pvd. Such files run\n"
-      "alone, with --sweep or several together (one after the other, not\n"
+      "alone, with --sweep or several together (--jobs at a time, not\n"
       "mixed with files of two bodies; cases.csv has a row per joint);\n"
       "Design/Mode = select chooses the ISO fits of all joints together.\n"
       "\n"

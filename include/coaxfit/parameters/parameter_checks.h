@@ -3,6 +3,8 @@
 
 #include <coaxfit/base/input_error.h>
 
+#include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -36,6 +38,22 @@ namespace coaxfit
     if (first == std::string::npos)
       return "";
     return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+  }
+
+  /**
+   * @p text as a plain decimal number (digits, '.', an exponent; no
+   * hexadecimal, no words, nothing after it), else NaN.
+   */
+  inline double
+  plain_number(const std::string &text)
+  {
+    if (text.empty()
+        || text.find_first_not_of("0123456789.eE+-") != std::string::npos)
+      return std::numeric_limits<double>::quiet_NaN();
+    const char  *begin = text.c_str();
+    char        *end   = nullptr;
+    const double x     = std::strtod(begin, &end);
+    return *end == '\0' ? x : std::numeric_limits<double>::quiet_NaN();
   }
 
   /** @p x with @p precision significant digits, for messages. */

@@ -202,6 +202,24 @@ namespace coaxfit
     }
 
     /**
+     * Whether joint @p k is a running fit: given a clearance (not chosen
+     * by a selection), such as a pressed bushing's shaft. It passes no
+     * torque or axial force: its slip is not judged.
+     */
+    bool
+    running_fit(const unsigned int k) const
+    {
+      return !selected[k] && fits[k].nominal_interference < 0.;
+    }
+
+    /** Whether joint @p k's slip is judged (not a running fit). */
+    bool
+    slip_judged(const unsigned int k) const
+    {
+      return slip_judged() && !running_fit(k);
+    }
+
+    /**
      * The torque (N m) a joint of diameter @p diameter (mm) must carry in
      * place of both loads: DIN 7190's resultant of the circumferential
      * force 2 M / D and the axial force, times K_A, times D / 2. A joint's

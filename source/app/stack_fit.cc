@@ -1496,14 +1496,13 @@ namespace coaxfit
     for (const JointFigures &f : joints_out)
       if (f.friction_coefficient > 0.)
         {
+          const unsigned int k = &f - &joints_out[0];
           out << "  " << f.name << ": torque capacity " << std::setprecision(6)
               << f.torque_capacity << " N m (friction coefficient "
               << f.friction_coefficient;
-          const JointFit &fit = parameters.fits[&f - &joints_out[0]];
-          if (fit.friction_text == "auto")
-            out << ", " << fit.friction_source;
+          if (parameters.fits[k].friction_text == "auto")
+            out << ", " << parameters.fits[k].friction_source;
           out << ")";
-          const unsigned int k = &f - &joints_out[0];
           if (parameters.slip_judged(k))
             out << ", safety against slip " << f.slip_safety << " at "
                 << parameters.required_loads_text()
@@ -1512,7 +1511,7 @@ namespace coaxfit
             out << ", a running fit: passes no load, its slip not judged";
           if (has_loads())
             {
-              const JointFigures &a = joints_assembly[&f - &joints_out[0]];
+              const JointFigures &a = joints_assembly[k];
               out << "; in the state of assembly " << a.torque_capacity
                   << " N m";
               if (parameters.slip_judged(k))

@@ -98,6 +98,19 @@ namespace coaxfit
         }
       return j;
     }
+
+    /** What the verdict and a selection judge against. */
+    Json
+    requirements_json(const StackParameters &p)
+    {
+      return {{"required_torque", p.required_torque},
+              {"required_axial_force", p.required_axial_force},
+              {"application_factor", p.application_factor},
+              {"slip_safety", p.slip_safety},
+              {"yield_safety", p.yield_safety},
+              {"fracture_safety", p.fracture_safety},
+              {"running_clearance", p.running_clearance}};
+    }
   } // namespace
 
 
@@ -133,6 +146,7 @@ namespace coaxfit
     j["case"]              = parameters.case_name;
     j["assembly"]          = {{"bodies", parameters.bodies}};
     j["design_mode"]       = parameters.design_mode;
+    j["requirements"]      = requirements_json(parameters);
     j["verdict"]           = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
     j["warnings"]          = cautions();
     j["selection"]         = Json::parse(selection->json());
@@ -272,21 +286,13 @@ namespace coaxfit
 
     // summary.json, last.
     Json j;
-    j["case"]        = parameters.case_name;
-    j["assembly"]    = {{"bodies", parameters.bodies}};
-    j["converged"]   = converged;
-    j["verdict"]     = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
-    j["warnings"]    = cautions();
-    j["design_mode"] = parameters.design_mode;
-    // What the verdict judges against.
-    j["requirements"]
-      = {{"required_torque", parameters.required_torque},
-         {"required_axial_force", parameters.required_axial_force},
-         {"application_factor", parameters.application_factor},
-         {"slip_safety", parameters.slip_safety},
-         {"yield_safety", parameters.yield_safety},
-         {"fracture_safety", parameters.fracture_safety},
-         {"running_clearance", parameters.running_clearance}};
+    j["case"]         = parameters.case_name;
+    j["assembly"]     = {{"bodies", parameters.bodies}};
+    j["converged"]    = converged;
+    j["verdict"]      = {{"ok", verdict.ok()}, {"failed", verdict.failed}};
+    j["warnings"]     = cautions();
+    j["design_mode"]  = parameters.design_mode;
+    j["requirements"] = requirements_json(parameters);
     if (selection)
       j["selection"] = Json::parse(selection->json());
     Json method;

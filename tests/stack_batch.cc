@@ -10,8 +10,10 @@
 //    run on its own (identical: the same process runs it the same way);
 // 3. the directories: written for every case but the bad one;
 // 4. --table FILE.csv, and refusals before any case runs (exit 1, one
-//    line, nothing written): stacks mixed with a file of two bodies, two
-//    cases with one output directory.
+//    line, nothing written): two cases with one output directory, a stack
+//    and a file of two bodies with one;
+// 5. stacks mixed with a file of two bodies: two tables, cases.csv and
+//    cases_stacks.csv, the case of two bodies equal to its own run.
 
 #include "run_executable.h"
 #include "run_summary.h"
@@ -194,9 +196,45 @@ main()
               << x.lines << " line: " << gist(message, 16)
               << "; written: " << (fs::exists(out) ? "yes" : "nothing") << '\n';
   };
-  refused("a stack and a file of two bodies",
-          rings + " " + examples + "steel_hub_H7s6.prm");
   const std::string twin = variant(in, "twin", "gear_rim.prm", into("rings"));
   refused("two cases, one directory", rings + " " + twin);
+  const std::string steel_twin
+    = variant(in, "steel_twin", "steel_hub_H7s6.prm", into("rings"));
+  refused("a stack and a file of two bodies, one directory",
+          rings + " " + steel_twin);
+
+  // 5. Stacks mixed with files of two bodies: each kind runs as a batch of
+  // its own, the two-body table in cases.csv, the stacks' beside it.
+  {
+    fs::remove_all(out);
+    const std::string steel
+      = variant(in, "steel", "steel_hub_H7s6.prm", into("steel"));
+    const RunResult m = run_command(
+      std::string("timeout 120 ") + coaxfit_executable + " --quiet " + rings
+      + " " + steel + " " + gear + " 2>&1 >/dev/null");
+    const auto two_body = read_csv(out + "/cases.csv"),
+               stacks   = read_csv(out + "/cases_stacks.csv");
+    std::cout << "5. a stack, a file of two bodies, a stack: exit code "
+              << m.exit_code << "; cases.csv "
+              << (two_body.empty() ? 0 : two_body.size() - 1)
+              << " row(s), cases_stacks.csv "
+              << (stacks.empty() ? 0 : stacks.size() - 1) << " rows; written:";
+    for (const std::string name : {"rings", "steel", "gear"})
+      std::cout << ' ' << name << ' '
+                << (fs::exists(out + "/" + name + "/report.md") ? "yes" : "no");
+    // The case of two bodies against the file run on its own.
+    const std::string alone = base + "/alone_steel";
+    fs::remove_all(alone);
+    run_coaxfit(alone, "--quiet " + steel);
+    // Fit/Case = all: the mean case gives the batch's figures.
+    const nlohmann::json j = read_summary(alone + "/mean");
+    std::cout << "\n  steel_hub_H7s6 alone (its mean case): mean "
+              << std::setprecision(7) << j["pressure"]["mean"].get<double>()
+              << " MPa, the batch's "
+              << agreement(two_body.size() > 1 ? std::stod(two_body[1][5]) : 0.,
+                           j["pressure"]["mean"].get<double>(),
+                           1e-9)
+              << '\n';
+  }
   return 0;
 }

@@ -12,7 +12,7 @@
 // 3. A second study into the same directory replaces the first.
 // 4. Refused in one line, exit 1, nothing written: the bodies swept,
 //    Output/Directory swept, an entry the stack does not have, a stack
-//    among files of two bodies.
+//    and a file of two bodies into one directory.
 // 5. --print-parameters FILE.prm lists the stack's own entries.
 
 #include <coaxfit/design/compound_cylinders.h>
@@ -247,8 +247,8 @@ main()
                                + "/prm/default.prm",
                              "two_bodies.prm",
                              std::filesystem::copy_options::overwrite_existing);
-  refused("a stack among files of two bodies",
-          "three_rings.prm two_bodies.prm");
+  refused("a stack and a file of two bodies into one directory",
+          "--set Output/Directory=both three_rings.prm two_bodies.prm");
 
   // Part 5: the stack's entries listed.
   const std::string list = std::string(coaxfit_executable)

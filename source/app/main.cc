@@ -226,7 +226,13 @@ namespace
   write_table(const std::string &table, const std::string &text)
   {
     if (table.empty())
-      return;
+      {
+        // No case could be read, so no output directory tells where.
+        std::cout << "  table not written: no case could be read (give "
+                     "--table FILE.csv to write it)"
+                  << std::endl;
+        return;
+      }
     std::error_code error;
     std::filesystem::create_directories(
       std::filesystem::path(table).parent_path(), error);
@@ -246,31 +252,37 @@ namespace
 
 
 
-  /**
-   * Several parameter files: one case each, run by a CaseBatch; the table
-   * printed and written; the batch's exit code.
-   */
-  int
-  run_files(const CommandLine &line, const unsigned int jobs)
+  /** The cases of several files read, their directories and inputs. */
+  template <typename Case>
+  struct PreparedBatch
+  {
+    std::vector<Case>        cases;
+    std::vector<Target>      targets;
+    std::vector<std::string> inputs; ///< the files and their includes
+  };
+
+  /** Read the files of two bodies of @p line, one case each. */
+  PreparedBatch<coaxfit::BatchCase>
+  prepare_files(const CommandLine &line)
   {
     using namespace coaxfit;
-    std::vector<BatchCase>   cases(line.filenames.size());
-    std::vector<Target>      targets;
-    std::vector<std::string> inputs = line.filenames; // and their includes
-    for (unsigned int i = 0; i < cases.size(); ++i)
+    PreparedBatch<BatchCase> batch;
+    batch.cases.resize(line.filenames.size());
+    batch.inputs = line.filenames;
+    for (unsigned int i = 0; i < batch.cases.size(); ++i)
       {
-        BatchCase &c = cases[i];
+        BatchCase &c = batch.cases[i];
         c.label      = line.filenames[i];
         try
           {
             auto p = std::make_shared<Parameters>(
               read_parameters(line.filenames[i], line.overrides));
-            targets.push_back({resolved(p->output_directory()),
-                               p->output_directory(),
-                               line.filenames[i]});
-            inputs.insert(inputs.end(),
-                          p->files_read.begin(),
-                          p->files_read.end());
+            batch.targets.push_back({resolved(p->output_directory()),
+                                     p->output_directory(),
+                                     line.filenames[i]});
+            batch.inputs.insert(batch.inputs.end(),
+                                p->files_read.begin(),
+                                p->files_read.end());
             c.parameters = p;
           }
         catch (const InputError &e)
@@ -278,32 +290,20 @@ namespace
             c.input_error = e.what();
           }
       }
-    const std::string              table = batch_table(line, targets, inputs);
-    const std::vector<CaseOutcome> outcomes
-      = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
-    std::cout << "\ncoaxfit: " << cases.size() << " cases\n";
-    CaseBatch::print_table(std::cout, cases, outcomes);
-    write_table(table, CaseBatch::table_csv(cases, outcomes));
-    return CaseBatch::exit_code(outcomes);
+    return batch;
   }
 
-
-
-  /**
-   * Several stack files (Assembly/Bodies): one case each, run by a
-   * StackBatch (at most @p jobs at a time); the table printed and written;
-   * the batch's exit code.
-   */
-  int
-  run_stack_files(const CommandLine &line, const unsigned int jobs)
+  /** Read the stack files (Assembly/Bodies) of @p line, one case each. */
+  PreparedBatch<coaxfit::StackCase>
+  prepare_stack_files(const CommandLine &line)
   {
     using namespace coaxfit;
-    std::vector<StackCase>   cases(line.filenames.size());
-    std::vector<Target>      targets;
-    std::vector<std::string> inputs = line.filenames;
-    for (unsigned int i = 0; i < cases.size(); ++i)
+    PreparedBatch<StackCase> batch;
+    batch.cases.resize(line.filenames.size());
+    batch.inputs = line.filenames;
+    for (unsigned int i = 0; i < batch.cases.size(); ++i)
       {
-        StackCase &c = cases[i];
+        StackCase &c = batch.cases[i];
         c.label      = line.filenames[i];
         if (!std::ifstream(c.label) || std::filesystem::is_directory(c.label))
           {
@@ -314,9 +314,9 @@ namespace
           {
             auto p = std::make_shared<StackParameters>(
               read_stack_parameters(line.filenames[i], line.overrides));
-            targets.push_back({resolved(p->output_directory()),
-                               p->output_directory(),
-                               line.filenames[i]});
+            batch.targets.push_back({resolved(p->output_directory()),
+                                     p->output_directory(),
+                                     line.filenames[i]});
             c.parameters = p;
           }
         catch (const InputError &e)
@@ -324,13 +324,109 @@ namespace
             c.input_error = e.what();
           }
       }
-    const std::string table = batch_table(line, targets, inputs);
+    return batch;
+  }
+
+  /**
+   * Run the cases of two bodies @p batch (at most @p jobs at a time); the
+   * table printed and written to @p table; the batch's exit code.
+   */
+  int
+  run_batch(const CommandLine                       &line,
+            const unsigned int                       jobs,
+            const PreparedBatch<coaxfit::BatchCase> &batch,
+            const std::string                       &table)
+  {
+    using namespace coaxfit;
+    const std::vector<CaseOutcome> outcomes
+      = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(batch.cases);
+    std::cout << "\ncoaxfit: " << batch.cases.size() << " cases\n";
+    CaseBatch::print_table(std::cout, batch.cases, outcomes);
+    write_table(table, CaseBatch::table_csv(batch.cases, outcomes));
+    return CaseBatch::exit_code(outcomes);
+  }
+
+  /** The same for stack cases (StackBatch, a row per joint). */
+  int
+  run_batch(const CommandLine                       &line,
+            const unsigned int                       jobs,
+            const PreparedBatch<coaxfit::StackCase> &batch,
+            const std::string                       &table)
+  {
+    using namespace coaxfit;
     const std::vector<StackCaseOutcome> outcomes
-      = StackBatch(jobs, !line.quiet, std::cout, std::cerr).run(cases);
-    std::cout << "\ncoaxfit: " << cases.size() << " stack cases\n";
-    StackBatch::print_table(std::cout, cases, outcomes);
-    write_table(table, StackBatch::table_csv(cases, outcomes));
+      = StackBatch(jobs, !line.quiet, std::cout, std::cerr).run(batch.cases);
+    std::cout << "\ncoaxfit: " << batch.cases.size() << " stack cases\n";
+    StackBatch::print_table(std::cout, batch.cases, outcomes);
+    write_table(table, StackBatch::table_csv(batch.cases, outcomes));
     return StackBatch::exit_code(outcomes);
+  }
+
+  /**
+   * Several files of two bodies: one case each, run by a CaseBatch; the
+   * table printed and written; the batch's exit code.
+   */
+  int
+  run_files(const CommandLine &line, const unsigned int jobs)
+  {
+    const auto batch = prepare_files(line);
+    return run_batch(line,
+                     jobs,
+                     batch,
+                     batch_table(line, batch.targets, batch.inputs));
+  }
+
+  /**
+   * Several stack files (Assembly/Bodies): one case each, run by a
+   * StackBatch (at most @p jobs at a time); the table printed and written;
+   * the batch's exit code.
+   */
+  int
+  run_stack_files(const CommandLine &line, const unsigned int jobs)
+  {
+    const auto batch = prepare_stack_files(line);
+    return run_batch(line,
+                     jobs,
+                     batch,
+                     batch_table(line, batch.targets, batch.inputs));
+  }
+
+  /**
+   * Files of two bodies @p plain and stack files @p stacks in one command:
+   * every file read and every directory checked against all others first;
+   * then the cases of two bodies run (their table in cases.csv or
+   * --table) and the stacks (their table, a row per joint, beside it with
+   * `_stacks` added to its name); the gravest exit code of both.
+   */
+  int
+  run_mixed_files(const CommandLine              &line,
+                  const unsigned int              jobs,
+                  const std::vector<std::string> &plain,
+                  const std::vector<std::string> &stacks)
+  {
+    CommandLine plain_line = line, stack_line = line;
+    plain_line.filenames         = plain;
+    stack_line.filenames         = stacks;
+    const auto          two_body = prepare_files(plain_line);
+    const auto          stack    = prepare_stack_files(stack_line);
+    std::vector<Target> targets  = two_body.targets;
+    targets.insert(targets.end(), stack.targets.begin(), stack.targets.end());
+    std::vector<std::string> inputs = two_body.inputs;
+    inputs.insert(inputs.end(), stack.inputs.begin(), stack.inputs.end());
+    const std::string table = batch_table(line, targets, inputs);
+    std::string       stack_table;
+    if (!table.empty())
+      {
+        const std::filesystem::path path(table);
+        stack_table
+          = (path.parent_path()
+             / (path.stem().string() + "_stacks" + path.extension().string()))
+              .string();
+        check_table(stack_table, inputs, targets);
+      }
+    const int a = run_batch(line, jobs, two_body, table);
+    const int b = run_batch(line, jobs, stack, stack_table);
+    return std::max(a, b);
   }
 
 
@@ -442,28 +538,30 @@ namespace
         // Several files: all stacks, or none (their tables differ).
         if (line.filenames.size() > 1)
           {
-            std::vector<std::string> stacks, plain;
+            // others: every file that is not a stack, those that cannot be
+            // read included (the batch of two bodies reports them).
+            std::vector<std::string> stacks, plain, others;
             for (const std::string &file : line.filenames)
               {
+                bool stack = false;
                 // A file that cannot be read is its case's to report.
-                if (!std::ifstream(file) || std::filesystem::is_directory(file))
-                  continue;
-                try
-                  {
-                    (assembly_bodies(file, line.overrides).empty() ? plain :
-                                                                     stacks)
-                      .push_back(file);
-                  }
-                catch (const InputError &)
-                  {}
+                if (std::ifstream(file) && !std::filesystem::is_directory(file))
+                  try
+                    {
+                      stack = !assembly_bodies(file, line.overrides).empty();
+                      if (!stack)
+                        plain.push_back(file);
+                    }
+                  catch (const InputError &)
+                    {}
+                (stack ? stacks : others).push_back(file);
               }
             if (!stacks.empty() && !plain.empty())
-              throw InputError(
-                "parameter file '" + stacks.front()
-                + "' names several bodies (Assembly/Bodies) and '"
-                + plain.front()
-                + "' does not: stacks and files of two bodies run in separate "
-                  "commands (their tables differ); nothing was run");
+              {
+                const int code = run_mixed_files(line, jobs, others, stacks);
+                check_standard_output();
+                return code;
+              }
             if (!stacks.empty())
               {
                 const int code = run_stack_files(line, jobs);

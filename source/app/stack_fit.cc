@@ -1503,6 +1503,8 @@ namespace coaxfit
           if (parameters.fits[k].friction_text == "auto")
             out << ", " << parameters.fits[k].friction_source;
           out << ")";
+          out << ", axial force capacity "
+              << 2000. * f.torque_capacity / f.diameter << " N";
           if (parameters.slip_judged(k))
             out << ", safety against slip " << f.slip_safety << " at "
                 << parameters.required_loads_text()

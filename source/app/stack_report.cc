@@ -206,13 +206,15 @@ namespace coaxfit
       friction = friction || f.friction_coefficient > 0.;
     if (friction)
       {
-        md << "\n| joint | friction coefficient | torque capacity N m | "
-              "safety against slip |\n|---|---|---|---|\n";
+        md << "\n| joint | friction coefficient | axial force capacity N | "
+              "torque capacity N m | safety against slip |\n"
+              "|---|---|---|---|---|\n";
         for (const JointFigures &f : joints_out)
           md << "| " << f.name << " | "
              << (f.friction_coefficient > 0. ?
-                   design_figure(f.friction_coefficient) :
-                   std::string("not given"))
+                   design_figure(f.friction_coefficient) + " | "
+                     + number(2000. * f.torque_capacity / f.diameter, 6) :
+                   std::string("not given | -"))
              << " | " << slip_cells(f, p.slip_judged(&f - &joints_out[0]))
              << " |\n";
         for (unsigned int k = 0; k < joints_out.size(); ++k)

@@ -252,6 +252,13 @@ namespace
 
 
 
+  /** Whether @p file can be opened as a parameter file. */
+  bool
+  readable_file(const std::string &file)
+  {
+    return std::ifstream(file) && !std::filesystem::is_directory(file);
+  }
+
   /** The cases of several files read, their directories and inputs. */
   template <typename Case>
   struct PreparedBatch
@@ -305,7 +312,7 @@ namespace
       {
         StackCase &c = batch.cases[i];
         c.label      = line.filenames[i];
-        if (!std::ifstream(c.label) || std::filesystem::is_directory(c.label))
+        if (!readable_file(c.label))
           {
             c.input_error = "cannot read parameter file '" + c.label + "'";
             continue;
@@ -533,30 +540,30 @@ namespace
 
         check_standard_output_usable();
         const unsigned int jobs = line.jobs > 0 ? line.jobs : available_cores();
-        // A file of several bodies (Assembly/Bodies) runs on its own or
-        // in a --sweep.
-        // Several files: all stacks, or none (their tables differ).
+        // Several files: stacks (Assembly/Bodies), files of two bodies,
+        // or both kinds, each kind a batch of its own (their tables
+        // differ).
         if (line.filenames.size() > 1)
           {
             // others: every file that is not a stack, those that cannot be
             // read included (the batch of two bodies reports them).
-            std::vector<std::string> stacks, plain, others;
+            std::vector<std::string> stacks, others;
+            bool                     two_body = false;
             for (const std::string &file : line.filenames)
               {
                 bool stack = false;
                 // A file that cannot be read is its case's to report.
-                if (std::ifstream(file) && !std::filesystem::is_directory(file))
+                if (readable_file(file))
                   try
                     {
-                      stack = !assembly_bodies(file, line.overrides).empty();
-                      if (!stack)
-                        plain.push_back(file);
+                      stack    = !assembly_bodies(file, line.overrides).empty();
+                      two_body = two_body || !stack;
                     }
                   catch (const InputError &)
                     {}
                 (stack ? stacks : others).push_back(file);
               }
-            if (!stacks.empty() && !plain.empty())
+            if (!stacks.empty() && two_body)
               {
                 const int code = run_mixed_files(line, jobs, others, stacks);
                 check_standard_output();

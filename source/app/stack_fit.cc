@@ -765,6 +765,7 @@ namespace coaxfit
     // T = nu p_mean pi D^2 l / 2 (N mm) over the joint's length l, in N m.
     f.torque_capacity = f.friction_coefficient * f.p_mean * M_PI * f.diameter
                         * f.diameter * joint.length() / 2. / 1000.;
+    f.axial_force_capacity = 2000. * f.torque_capacity / f.diameter;
     // Against DIN 7190's resultant of both loads (as a torque at D).
     f.slip_safety
       = parameters.slip_judged(k) ?
@@ -1503,8 +1504,7 @@ namespace coaxfit
           if (parameters.fits[k].friction_text == "auto")
             out << ", " << parameters.fits[k].friction_source;
           out << ")";
-          out << ", axial force capacity "
-              << 2000. * f.torque_capacity / f.diameter << " N";
+          out << ", axial force capacity " << f.axial_force_capacity << " N";
           if (parameters.slip_judged(k))
             out << ", safety against slip " << f.slip_safety << " at "
                 << parameters.required_loads_text()

@@ -88,11 +88,10 @@ namespace coaxfit
       if (f.friction_coefficient > 0.)
         {
           // mu p_mean pi D l, N: the axial force capacity.
-          j["design"]
-            = {{"friction_coefficient", f.friction_coefficient},
-               {"torque_capacity", number_or_null(f.torque_capacity)},
-               {"axial_force_capacity",
-                number_or_null(2000. * f.torque_capacity / f.diameter)}};
+          j["design"] = {{"friction_coefficient", f.friction_coefficient},
+                         {"torque_capacity", number_or_null(f.torque_capacity)},
+                         {"axial_force_capacity",
+                          number_or_null(f.axial_force_capacity)}};
           if (slip)
             j["design"]["slip_safety"] = f.slip_safety;
         }

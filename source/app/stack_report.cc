@@ -213,7 +213,7 @@ namespace coaxfit
           md << "| " << f.name << " | "
              << (f.friction_coefficient > 0. ?
                    design_figure(f.friction_coefficient) + " | "
-                     + number(2000. * f.torque_capacity / f.diameter, 6) :
+                     + number(f.axial_force_capacity, 6) :
                    std::string("not given | -"))
              << " | " << slip_cells(f, p.slip_judged(&f - &joints_out[0]))
              << " |\n";

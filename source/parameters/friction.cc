@@ -57,7 +57,9 @@ namespace coaxfit
   FrictionValue
   din7190_friction(const MaterialFamily shaft,
                    const MaterialFamily hub,
-                   const JoiningMethod  method)
+                   const JoiningMethod  method,
+                   const std::string   &shaft_name,
+                   const std::string   &hub_name)
   {
     // A material without a Name counts as steel, the common case.
     const bool        shaft_known = shaft != MaterialFamily::unknown;
@@ -68,9 +70,9 @@ namespace coaxfit
       = shaft_known && hub_known ?
           "" :
           std::string("; ")
-            + (!shaft_known && !hub_known ? "shaft and hub" :
-               !shaft_known               ? "shaft" :
-                                            "hub")
+            + (!shaft_known && !hub_known ? shaft_name + " and " + hub_name :
+               !shaft_known               ? shaft_name :
+                                            hub_name)
             + " without a Material Name taken as steel";
     if (a != MaterialFamily::steel)
       std::swap(a, b);

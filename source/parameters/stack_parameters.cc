@@ -1334,21 +1334,11 @@ namespace coaxfit
               const FrictionValue value
                 = din7190_friction(p.materials[k].family,
                                    p.materials[k + 1].family,
-                                   p.joining);
+                                   p.joining,
+                                   p.bodies[k],
+                                   p.bodies[k + 1]);
               fit.friction_coefficient = value.coefficient;
-              // The table's words are a shaft's and a hub's.
-              std::string source = value.source;
-              for (const auto &[generic, body] :
-                   {std::make_pair(std::string("shaft and hub"),
-                                   p.bodies[k] + " and " + p.bodies[k + 1]),
-                    std::make_pair(std::string("; shaft without"),
-                                   "; " + p.bodies[k] + " without"),
-                    std::make_pair(std::string("; hub without"),
-                                   "; " + p.bodies[k + 1] + " without")})
-                if (const std::size_t at = source.find(generic);
-                    at != std::string::npos)
-                  source.replace(at, generic.size(), body);
-              fit.friction_source = source + "; " + entry + " = auto";
+              fit.friction_source = value.source + "; " + entry + " = auto";
             }
           catch (const InputError &)
             {

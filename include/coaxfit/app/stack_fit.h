@@ -48,6 +48,7 @@ namespace coaxfit
     double       lame_p, lame_alone_p; ///< plane-stress estimates (MPa)
     double       friction_coefficient; ///< 0: not given
     double       torque_capacity;      ///< N m (friction given)
+    double       axial_force_capacity; ///< N, nu p_mean pi D l
     double       slip_safety;          ///< over Design/Required torque; 0: none
     /**
      * @name Joining (DIN 7190): the outer part of the joint heated, or the

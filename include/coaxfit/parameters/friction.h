@@ -54,12 +54,16 @@ namespace coaxfit
    * value for the method (a shrink fit on cast iron, the light and copper
    * alloys' dry values for every method, the lengthwise press fit), the
    * nearest tabulated one, named in the source. A pairing without steel
-   * has no value: InputError naming Design/Friction coefficient.
+   * has no value: InputError naming Design/Friction coefficient. The
+   * source names the bodies taken as steel @p shaft_name and @p hub_name
+   * (a stack's joint: its two bodies).
    */
   FrictionValue
-  din7190_friction(MaterialFamily shaft,
-                   MaterialFamily hub,
-                   JoiningMethod  method);
+  din7190_friction(MaterialFamily     shaft,
+                   MaterialFamily     hub,
+                   JoiningMethod      method,
+                   const std::string &shaft_name = "shaft",
+                   const std::string &hub_name   = "hub");
 } // namespace coaxfit
 
 #endif

@@ -18,6 +18,19 @@
 
 namespace coaxfit_test
 {
+  /** The largest difference of @p a and @p b over the largest of @p b. */
+  inline double
+  difference(const std::vector<double> &a, const std::vector<double> &b)
+  {
+    double d = 0., scale = 0.;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        d     = std::max(d, std::abs(a[i] - b[i]));
+        scale = std::max(scale, std::abs(b[i]));
+      }
+    return d / scale;
+  }
+
   /** summary.json of the run in @p directory (null if there is none). */
   inline nlohmann::json
   read_summary(const std::string &directory)

@@ -34,10 +34,9 @@
 //    Mesh/Cell size without sections or out of range, a grading too
 //    steep: exit 1, one line naming the entries, nothing written.
 
-#include <coaxfit/design/compound_cylinders.h>
-
 #include "run_executable.h"
 #include "run_summary.h"
+#include "stack_lame_check.h"
 
 #include <cmath>
 #include <filesystem>
@@ -72,10 +71,7 @@ namespace
   {
     std::ostringstream s;
     s.precision(12);
-    s << "subsection Assembly\n  set Bodies = ";
-    for (const Body &b : bodies)
-      s << (&b == &bodies[0] ? "" : ", ") << b.name;
-    s << "\nend\nsubsection Geometry\n";
+    s << "subsection Geometry\n";
     const double z = length / 2.;
     for (const Body &b : bodies)
       if (b.section)
@@ -92,17 +88,8 @@ namespace
           << "\n    set Inner diameter = " << b.d_in
           << "\n    set Outer diameter = " << b.d_out
           << "\n    set Length = " << length << "\n  end\n";
-    s << "end\nsubsection Material\n";
-    for (const Body &b : bodies)
-      s << "  subsection " << b.name << "\n    set E = " << b.E
-        << "\n    set nu = " << b.nu << "\n  end\n";
-    s << "end\nsubsection Fit\n";
-    for (unsigned int k = 0; k < U.size(); ++k)
-      s << "  subsection " << bodies[k].name << '-' << bodies[k + 1].name
-        << "\n    set Diametral interference = " << U[k] << "\n  end\n";
-    s << "end\nsubsection Mesh\n  set Global refinements = 1\nend\n"
-         "subsection Coupling\n  set Tolerance = 1e-10\nend\n";
-    return s.str();
+    s << "end\n";
+    return s.str() + lame_stack_entries(rings_of(bodies), U);
   }
 
   /** Part 1: @p bodies against the compound cylinders. */
@@ -113,27 +100,7 @@ namespace
              const bool                 whole = false)
   {
     std::ofstream(name + ".prm") << stack_prm(bodies, U, whole);
-    std::filesystem::remove_all(name);
-    const RunResult      r = run_coaxfit(name, quiet + name + ".prm");
-    const nlohmann::json s = read_summary(name);
-    std::vector<coaxfit::CompoundCylinders::Ring> rings;
-    for (const Body &b : bodies)
-      rings.push_back({b.d_in, b.d_out, b.E, b.nu});
-    const coaxfit::CompoundCylinders exact(rings, U, 0., 0.);
-    std::cout << name << ": exit " << r.exit_code << ", converged "
-              << s["converged"] << ", model "
-              << s["mesh"]["model"].get<std::string>() << '\n';
-    for (unsigned int k = 0; k < U.size(); ++k)
-      {
-        const nlohmann::json &j = s["joints"][k];
-        const double          p = exact.pressure(k);
-        std::cout << "  " << j["name"].get<std::string>() << ": "
-                  << std::setprecision(6) << p << " MPa exact: at the "
-                  << "mid-plane "
-                  << agreement(j["pressure"]["at_mid_plane"], p, 1e-5)
-                  << ", mean " << agreement(j["pressure"]["mean"], p, 1e-5)
-                  << '\n';
-      }
+    check_against_compound_cylinders(name, name + ".prm", rings_of(bodies), U);
   }
 
   const std::string gear_body
@@ -174,19 +141,6 @@ namespace
              "end\n"
              "subsection Mesh\n  set Global refinements = 1\nend\n"
              "subsection Coupling\n  set Tolerance = 1e-10\nend\n";
-  }
-
-  /** The largest difference of @p a and @p b over the largest of @p b. */
-  double
-  difference(const std::vector<double> &a, const std::vector<double> &b)
-  {
-    double d = 0., scale = 0.;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        d     = std::max(d, std::abs(a[i] - b[i]));
-        scale = std::max(scale, std::abs(b[i]));
-      }
-    return d / scale;
   }
 
   /** Parts 2 and 3: the gear with @p loads (--set options). */

@@ -60,7 +60,8 @@ namespace coaxfit
   read_section_file(Triangulation<2>  &triangulation,
                     const std::string &filename,
                     const std::string &entry,
-                    const unsigned int global_refinements)
+                    const unsigned int global_refinements,
+                    const bool         joint_required)
   {
     const std::string context = "parameter " + entry + " = '" + filename + "'";
     std::string       extension = std::filesystem::path(filename).extension();
@@ -117,7 +118,7 @@ namespace coaxfit
               curves[curve].boundary_id = names[name];
             }
         }
-      if (names.count("joint") == 0)
+      if (joint_required && names.count("joint") == 0)
         throw InputError(
           context
           + ": no physical curve named 'joint' (the surface that "
@@ -176,6 +177,21 @@ namespace coaxfit
     });
     triangulation.refine_global(global_refinements);
     return names;
+  }
+
+
+
+  std::string
+  resolved_section_file(const std::string &text,
+                        const std::string &parameter_file)
+  {
+    const std::filesystem::path given = trimmed(text);
+    return std::filesystem::absolute(
+             given.is_absolute() ?
+               given :
+               std::filesystem::path(parameter_file).parent_path() / given)
+      .lexically_normal()
+      .string();
   }
 
 

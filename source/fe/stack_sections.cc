@@ -1,5 +1,6 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/fe/mesh.h>
+#include <coaxfit/fe/section_file.h>
 #include <coaxfit/fe/section_joint.h>
 #include <coaxfit/fe/section_placement.h>
 #include <coaxfit/fe/section_symmetry.h>
@@ -15,9 +16,23 @@ namespace coaxfit
                                const std::vector<std::string> &texts)
   {
     const unsigned int N = texts.size();
+    files.resize(N);
+    file_paths.resize(N);
     for (unsigned int b = 0; b < N; ++b)
-      drawn.push_back(std::make_unique<SectionOutline>(
-        SectionOutline::parse(texts[b], entries[b])));
+      if (is_section_file_name(texts[b]))
+        {
+          // A gmsh file: its mesh as it is, its boundary the outline.
+          const std::string path = trimmed(texts[b]);
+          auto              mesh = std::make_shared<Triangulation<2>>();
+          read_section_file(*mesh, path, entries[b], 0, false);
+          drawn.push_back(std::make_unique<SectionOutline>(
+            outline_of_mesh(*mesh, entries[b], path)));
+          files[b]      = mesh;
+          file_paths[b] = path;
+        }
+      else
+        drawn.push_back(std::make_unique<SectionOutline>(
+          SectionOutline::parse(texts[b], entries[b])));
     double extent = 0.;
     for (const auto &outline : drawn)
       extent = std::max(extent, outline->extent());
@@ -36,15 +51,16 @@ namespace coaxfit
         std::vector<JointPiece> faces = faces_across_axis(pieces, tol);
         // Sections that meet within the drawing tolerance: corners on the
         // joint's cylinder moved onto it exactly, so that both meshes have
-        // it.
+        // it (a file's mesh is not moved).
         if (pieces.size() == 1
             && std::abs(pieces[0].start[0] - pieces[0].end[0]) <= tol)
           {
             const Point<2> a = pieces[0].start,
                            c(pieces[0].start[0], pieces[0].end[1]);
             for (const unsigned int b : {k, k + 1})
-              drawn[b] = std::make_unique<SectionOutline>(
-                snapped(*drawn[b], a, c, tol));
+              if (!files[b])
+                drawn[b] = std::make_unique<SectionOutline>(
+                  snapped(*drawn[b], a, c, tol));
             pieces = merged(find_joint(*drawn[k], *drawn[k + 1]), tol);
             faces  = faces_across_axis(pieces, tol);
           }
@@ -110,8 +126,11 @@ namespace coaxfit
     std::vector<const SectionOutline *> all;
     for (const auto &outline : drawn)
       all.push_back(outline.get());
+    // A file's mesh is not cut: a stack with a file is modelled whole.
     const std::optional<double> plane     = mirror_plane(all);
     bool                        symmetric = plane.has_value();
+    for (unsigned int b = 0; b < N; ++b)
+      symmetric = symmetric && !files[b];
     for (unsigned int k = 0; k + 1 < N && symmetric; ++k)
       symmetric = std::abs(*plane - 0.5 * (z_lo[k] + z_hi[k])) <= tol;
     for (unsigned int b = 0; b < N && symmetric; ++b)
@@ -137,6 +156,111 @@ namespace coaxfit
         start = z_lo;
       }
     half_model_ = symmetric;
+
+    // A file's nodes on its joints: its neighbour is meshed with them.
+    file_joint_z.assign(N - 1, {});
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      for (const unsigned int b : {k, k + 1})
+        if (files[b])
+          {
+            const unsigned int  other = b == k ? k + 1 : k;
+            std::vector<double> z     = file_nodes_on_joint(
+              b, k, z_lo[k], z_hi[k], tol, entries[b], entries[other]);
+            if (file_joint_z[k].empty())
+              file_joint_z[k] = z;
+            else
+              {
+                bool same = z.size() == file_joint_z[k].size();
+                for (unsigned int i = 0; same && i < z.size(); ++i)
+                  same = std::abs(z[i] - file_joint_z[k][i]) <= tol;
+                if (!same)
+                  throw InputError(
+                    "parameters " + entries[k] + " and " + entries[k + 1]
+                    + ": both are gmsh files, with "
+                    + std::to_string(file_joint_z[k].size()) + " and "
+                    + std::to_string(z.size())
+                    + " nodes on their joint from z = " + number(z_lo[k], 6)
+                    + " to " + number(z_hi[k], 6)
+                    + " that are not the same; a stack's joint shares its "
+                      "nodes: give both files the same points on it, or "
+                      "draw one of them as an outline");
+              }
+          }
+  }
+
+
+
+  std::vector<double>
+  StackSections::file_nodes_on_joint(const unsigned int b,
+                                     const unsigned int k,
+                                     const double       z_lo,
+                                     const double       z_hi,
+                                     const double       tol,
+                                     const std::string &entry,
+                                     const std::string &other) const
+  {
+    const double        R = radius[k];
+    std::vector<double> z;
+    for (const auto &cell : files[b]->active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && std::abs(face->vertex(0)[0] - R) <= tol
+            && std::abs(face->vertex(1)[0] - R) <= tol)
+          for (const unsigned int v : {0u, 1u})
+            if (face->vertex(v)[1] >= z_lo - tol
+                && face->vertex(v)[1] <= z_hi + tol)
+              z.push_back(face->vertex(v)[1]);
+    std::sort(z.begin(), z.end());
+    std::vector<double> unique;
+    for (const double zi : z)
+      if (unique.empty() || zi - unique.back() > tol)
+        unique.push_back(zi);
+    for (const double end : {z_lo, z_hi})
+      {
+        const auto near
+          = std::find_if(unique.begin(), unique.end(), [&](const double zi) {
+              return std::abs(zi - end) <= tol;
+            });
+        if (near == unique.end())
+          throw InputError(
+            "parameter " + entry + " = '" + file_paths[b]
+            + "': its mesh has no node at z = " + number(end, 6)
+            + ", D = " + number(2. * R, 6) + ", where its joint with " + other
+            + " ends (a corner of that section lies on a face of this "
+              "mesh); a stack's joint shares its nodes, so add a point "
+              "there to the file, or make the sections end together");
+        *near = end; // the neighbour's corner exactly
+      }
+    return unique;
+  }
+
+
+
+  void
+  StackSections::tag_file_mesh(Triangulation<2>  &mesh,
+                               const unsigned int b) const
+  {
+    double extent = 0.;
+    for (const auto &outline : drawn)
+      extent = std::max(extent, outline->extent());
+    const double       tol = 1e-6 * extent;
+    const unsigned int N   = n_bodies();
+    for (const auto &cell : mesh.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const Point<2>     p = face->vertex(0), q = face->vertex(1);
+            types::boundary_id id
+              = p[0] <= tol && q[0] <= tol ? BoundaryId::axis : SectionId::free;
+            for (const unsigned int k : {b - 1, b})
+              if (k + 1 < N // b - 1 wraps round for b = 0
+                  && std::abs(p[0] - radius[k]) <= tol
+                  && std::abs(q[0] - radius[k]) <= tol
+                  && std::min(p[1], q[1]) >= joint_start(k) - tol
+                  && std::max(p[1], q[1]) <= joint_end(k) + tol)
+                id = k + 1 == b && b + 1 < N ? BoundaryId::inner_joint :
+                                               BoundaryId::joint;
+            face->set_boundary_id(id);
+          }
   }
 
 
@@ -243,17 +367,29 @@ namespace coaxfit
         TaggedSegment joint{Point<2>(radius[k], start[k]),
                             Point<2>(radius[k], joint_end(k)),
                             BoundaryId::joint};
-        joint.vertices = joint_vertices(k, settings);
+        if (file_joint_z[k].empty())
+          joint.vertices = joint_vertices(k, settings);
+        else
+          for (const double z : file_joint_z[k])
+            joint.vertices.emplace_back(radius[k], z);
         // The middle of a half model's joint is no end.
         joint.refine_ends = !half_model_;
         joints.push_back(joint);
       }
     std::vector<std::shared_ptr<Triangulation<2>>> meshes(N);
-    // Every body's cells split, or none: the joints' vertices must match.
-    const auto mesh_all = [&](const bool full_quad) {
-      unsigned int split = 0;
+    // Every outline's cells split, or none: the joints' vertices must
+    // match (then a file's mesh is refined once more, which splits its
+    // faces as gmsh does).
+    unsigned int n_outlines = 0;
+    for (unsigned int b = 0; b < N; ++b)
+      n_outlines += !files[b];
+    unsigned int split    = 0;
+    const auto   mesh_all = [&](const bool full_quad) {
+      split = 0;
       for (unsigned int b = 0; b < N; ++b)
         {
+          if (files[b])
+            continue;
           SectionBoundary boundary;
           if (b > 0)
             {
@@ -280,10 +416,19 @@ namespace coaxfit
           meshes[b]       = std::make_shared<Triangulation<2>>();
           split += make_section_mesh(*meshes[b], outline, boundary, local);
         }
-      return split == 0 || split == N;
+      return split == 0 || split == n_outlines;
     };
     if (!mesh_all(settings.full_quad))
       mesh_all(true);
+    for (unsigned int b = 0; b < N; ++b)
+      if (files[b])
+        {
+          meshes[b] = std::make_shared<Triangulation<2>>();
+          meshes[b]->copy_triangulation(*files[b]);
+          tag_file_mesh(*meshes[b], b);
+          meshes[b]->refine_global(settings.global_refinements
+                                   + (split > 0 ? 1 : 0));
+        }
 
     // The surfaces Operation's pressures act on: the innermost body's
     // bore, the outermost body's largest diameter.

@@ -1438,14 +1438,7 @@ namespace coaxfit
           {"Hub section", &parameters.drawing.hub_section}})
       if (is_section_file_name(*text))
         {
-          const std::filesystem::path given = trimmed(*text);
-          const std::string           resolved
-            = std::filesystem::absolute(
-                given.is_absolute() ?
-                  given :
-                  std::filesystem::path(filename).parent_path() / given)
-                .lexically_normal()
-                .string();
+          const std::string resolved = resolved_section_file(*text, filename);
           prm.enter_subsection("Geometry");
           prm.set(entry, resolved);
           prm.leave_subsection();

@@ -1,4 +1,5 @@
 #include <coaxfit/base/input_error.h>
+#include <coaxfit/fe/section_file.h>
 #include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/operation_entries.h>
 #include <coaxfit/parameters/parameter_checks.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -498,11 +500,15 @@ namespace coaxfit
             + ": a closed outline of points z, D (mm; a third number a "
               "fillet radius) separated by ';', the last repeating the "
               "first, in the drawing's coordinates shared by every body "
-              "(a gear wheel with its web, a flanged sleeve). Its joints "
-              "with its neighbours are found where the sections meet, each "
-              "one cylinder. A stack symmetric about one plane through "
-              "the middle of every joint is modelled as its half, any "
-              "other whole. Empty: the plain ring.",
+              "(a gear wheel with its web, a flanged sleeve); or a gmsh "
+              "file (.geo or .msh, x the radius and y the axial position in "
+              "mm; relative to this file), whose mesh is used as it is and "
+              "whose neighbours are meshed with its nodes on their joints. "
+              "Its joints with its neighbours are found where the sections "
+              "meet, each one cylinder. A stack symmetric about one plane "
+              "through the middle of every joint is modelled as its half, "
+              "any other (and one with a file) whole. Empty: the plain "
+              "ring.",
           Patterns::Anything());
       }
     prm.leave_subsection();
@@ -1459,6 +1465,18 @@ namespace coaxfit
     std::set<std::string> missing = entries_not_set(prm);
     for (unsigned int b = 0; b < p.bodies.size(); ++b)
       fill_material(p.materials[b], p.bodies[b], missing);
+    // A section from a gmsh file: its path relative to the parameter
+    // file, written absolute so that the run's parameters.prm repeats it
+    // from anywhere.
+    for (unsigned int b = 0; b < p.bodies.size(); ++b)
+      if (is_section_file_name(p.section_text[b]))
+        {
+          p.section_text[b]
+            = resolved_section_file(p.section_text[b], filename);
+          prm.enter_subsection("Geometry");
+          prm.set(p.bodies[b] + " section", p.section_text[b]);
+          prm.leave_subsection();
+        }
     read_sections(p, missing);
     const bool default_given = missing.erase("Fit.Diametral interference") == 0;
     if (default_given && !p.default_fit.iso_fit.empty())

@@ -31,7 +31,9 @@ namespace coaxfit
    *   BoundaryId::joint, `axis` BoundaryId::axis, every other name a new id
    *   from SectionId::first_named on, in the order of the groups' tags. A
    *   boundary face on no physical curve is BoundaryId::axis on r = 0 and
-   *   SectionId::free elsewhere. A file without a `joint` curve is refused.
+   *   SectionId::free elsewhere. A file without a `joint` curve is refused
+   *   if @p joint_required (a body of two; a stack finds its joints where
+   *   the sections meet).
    * - Curves of a `.geo` that are circle arcs get a PolarManifold<2> about
    *   their centre (manifold ids from SectionId::first_arc), so that global
    *   refinement keeps new vertices on them; a `.msh` file holds no
@@ -47,7 +49,8 @@ namespace coaxfit
   read_section_file(Triangulation<2>  &triangulation,
                     const std::string &filename,
                     const std::string &entry,
-                    unsigned int       global_refinements = 0);
+                    unsigned int       global_refinements = 0,
+                    bool               joint_required     = true);
 
   /**
    * Whether the value @p text of `Geometry/Shaft section` or `Hub section`
@@ -56,6 +59,16 @@ namespace coaxfit
    */
   bool
   is_section_file_name(const std::string &text);
+
+  /**
+   * The section file @p text (is_section_file_name()) of the parameter file
+   * @p parameter_file: relative to that file's directory unless absolute,
+   * written absolute and normal, so that a run's parameters.prm repeats it
+   * from anywhere.
+   */
+  std::string
+  resolved_section_file(const std::string &text,
+                        const std::string &parameter_file);
 
   /**
    * The boundary of the section mesh @p triangulation (as read by

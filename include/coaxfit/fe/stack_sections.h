@@ -40,6 +40,18 @@ namespace coaxfit
    * on it (graded towards its end from Mesh/Cell size), so that their
    * joint nodes coincide: the stack's coupling takes the points of a
    * joint as shared, as it does for rings.
+   *
+   * A body's section may instead be a gmsh file (`.geo` or `.msh`,
+   * read_section_file()): its mesh is kept as it is, and the outline of
+   * its boundary (outline_of_mesh()) is what its joints are found from.
+   * The neighbour of a file's joint is meshed with the file's nodes on
+   * it, so the joint's nodes are again shared; the file's mesh must
+   * therefore have a node at each end of the joint (a corner of the
+   * neighbour's section lying on one of its faces is refused, naming the
+   * point to add), and two files that meet must have the same nodes on
+   * their joint. The file's physical curve names are not needed (a
+   * stack's joints are where the sections meet). A stack with a file is
+   * modelled whole.
    */
   class StackSections
   {
@@ -169,6 +181,13 @@ namespace coaxfit
     double
     equivalent_outer_diameter(unsigned int b) const;
 
+    /** Whether body @p b's section is a gmsh file (its mesh kept). */
+    bool
+    from_file(const unsigned int b) const
+    {
+      return files[b] != nullptr;
+    }
+
     /** The axial extent of body @p b's section (mm). */
     double
     length(unsigned int b) const;
@@ -192,8 +211,39 @@ namespace coaxfit
     std::vector<double>                          outer_mean; ///< per joint
     std::vector<std::optional<ShoulderFace>>     shoulders;  ///< per joint
     std::vector<double>                          start; ///< joints' model z
-    double                                       z_m         = 0.;
-    bool                                         half_model_ = true;
+    /** Per body: the mesh of its gmsh file, unrefined; null: an outline. */
+    std::vector<std::shared_ptr<const Triangulation<2>>> files;
+    std::vector<std::string> file_paths; ///< per body, as given (resolved)
+    /**
+     * Per joint: the z of a file's mesh nodes on it (model z, ascending,
+     * both ends included); empty if neither body is a file.
+     */
+    std::vector<std::vector<double>> file_joint_z;
+    double                           z_m         = 0.;
+    bool                             half_model_ = true;
+
+    /**
+     * The z of the vertices of the mesh of the file of body @p b on joint
+     * @p k (ascending, merged within @p tol).
+     * @throws InputError naming the entry @p entry if it has none at an end
+     * of the joint, where the neighbour's section has its corner.
+     */
+    std::vector<double>
+    file_nodes_on_joint(unsigned int       b,
+                        unsigned int       k,
+                        double             z_lo,
+                        double             z_hi,
+                        double             tol,
+                        const std::string &entry,
+                        const std::string &other) const;
+
+    /**
+     * The boundary ids of the copy @p mesh of body @p b's file: its joints
+     * (BoundaryId::inner_joint or BoundaryId::joint as make_meshes() says),
+     * r = 0 the axis, every other face SectionId::free.
+     */
+    void
+    tag_file_mesh(Triangulation<2> &mesh, unsigned int b) const;
 
     /** The vertices of joint @p k between its ends, ascending. */
     std::vector<Point<2>>

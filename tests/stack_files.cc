@@ -7,7 +7,8 @@
 //    and its mean) is the compound cylinders' (closed form) to 1e-5 at
 //    Mesh/Global refinements = 1, the files' rings structured meshes
 //    (transfinite, 1 mm along the axis): three bodies with the sleeve a
-//    file; three with the sleeve and the hub files that have the same
+//    file; three with the shaft a file (solid: on the axis); three with
+//    the sleeve and the hub files that have the same
 //    nodes on their joint; five with a hollow core and two files that are
 //    not neighbours.
 // 2. The gear wheel with a web of prm/examples/gear_wheel_with_web.prm
@@ -19,7 +20,9 @@
 //    Wheel-Rim 60.1541 and 60.1565, 33.0996 both). Staggered in both
 //    orderings = monolithic (1e-8).
 // 3. Bad input: a rim whose ends lie on a face of the file between its
-//    nodes, two files whose joint nodes differ, a file that does not
+//    nodes, two files whose joint nodes differ, a ring whose end lies
+//    1e-5 mm beside a file's node (it must be the node), a file name with
+//    '#' (parameters.prm could not repeat it), a file that does not
 //    exist: exit 1, one line naming the entry, nothing written.
 
 #include "run_executable.h"
@@ -150,6 +153,11 @@ main()
               {"Sleeve", 60., 90., 110000., 0.34, 40},
               {"Hub", 90., 160., 70000., 0.33, 0}},
              {0.04, 0.06});
+  check_lame("shaft_file",
+             {{"Shaft", 0., 60., 210000., 0.3, 40},
+              {"Sleeve", 60., 90., 110000., 0.34, 0},
+              {"Hub", 90., 160., 70000., 0.33, 0}},
+             {0.04, 0.06});
   check_lame("two_files",
              {{"Shaft", 0., 60., 210000., 0.3, 0},
               {"Sleeve", 60., 90., 110000., 0.34, 40},
@@ -243,6 +251,10 @@ main()
                   {"Hub", 90., 160., 70000., 0.33, 30}},
                  {0.04, 0.06});
   refuse("two files with other nodes on their joint", "mismatch.prm");
+  refuse("a hub ending 1e-5 mm beside the sleeve file's last node",
+         "--set Geometry/Hub/Length=39.99998 three.prm");
+  refuse("a file name with '#'",
+         "--set \"Geometry/Sleeve section=a#b.geo\" three.prm");
   std::ofstream("missing.prm")
     << stack_prm("missing",
                  {{"Shaft", 0., 60., 210000., 0.3, 0},

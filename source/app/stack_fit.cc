@@ -27,6 +27,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace coaxfit
 {
@@ -309,6 +310,8 @@ namespace coaxfit
         joint.name         = parameters.joint_name(k);
         joint.interference = parameters.fits[k].diametral_interference / 2.;
         joint.whole = parameters.sections && !parameters.sections->half_model();
+        if (parameters.sections)
+          joint.pieces = parameters.sections->joint_pieces(k);
         const unsigned int n      = out.n_inner_interface_points() > 0 ?
                                       out.n_inner_interface_points() :
                                       out.n_interface_points();
@@ -743,12 +746,36 @@ namespace coaxfit
     f.closed = f.separated_points == 0;
     // The length in contact: each stretch between neighbouring points
     // counts whole if both touch, half if one does (the whole joint's:
-    // twice the half model's).
+    // twice the half model's), a relief groove not.
     double in_contact = 0.;
     for (unsigned int i = 0; i + 1 < joint.n_points(); ++i)
-      in_contact += 0.5 * (state.contact[k][i] + state.contact[k][i + 1])
-                    * (joint.z[i + 1] - joint.z[i]);
+      in_contact += joint.bearing(i) ?
+                      0.5 * (state.contact[k][i] + state.contact[k][i + 1])
+                        * (joint.z[i + 1] - joint.z[i]) :
+                      0.;
     f.contact_length = (joint.whole ? 1. : 2.) * in_contact;
+    const double offset
+      = parameters.sections ? parameters.sections->drawing_offset() : 0.;
+    f.mid_plane_z = joint.middle_z() + offset;
+    // Each piece's mean: its points' forces over their weights (a half
+    // model's piece before the plane its mirror's).
+    if (parameters.sections
+        && parameters.sections->joint_drawn_pieces(k).size() > 1)
+      for (const auto &[lo, hi] : parameters.sections->joint_drawn_pieces(k))
+        {
+          double a = lo - offset, b = hi - offset;
+          if (!joint.whole && b <= 0.)
+            std::tie(a, b) = std::make_pair(-b, -a);
+          const double tol   = 1e-9 * (b - a);
+          double       force = 0., weight = 0.;
+          for (unsigned int i = 0; i < joint.n_points(); ++i)
+            if (joint.z[i] >= a - tol && joint.z[i] <= b + tol)
+              {
+                force += state.force[k][i];
+                weight += joint.weights[i];
+              }
+          f.pieces.push_back({lo, hi, force / weight});
+        }
     // The gap of each point from the bodies' own displacements (the loads'
     // answers included).
     const std::vector<double> gaps
@@ -798,9 +825,11 @@ namespace coaxfit
   {
     // The mid-plane: z = 0 of a half model; of a whole one, the plane
     // through the middle of the body's bore joint (the innermost body's:
-    // its outer joint), on each radius its nearest nodes.
-    const StackJoint &own = stack_joints[b > 0 ? b - 1 : 0];
-    const double z_mid = own.whole ? 0.5 * (own.z.front() + own.z.back()) : 0.;
+    // its outer joint); of a joint of several pieces, through the middle
+    // of its main seat (StackJoint::middle_z()); on each radius its
+    // nearest nodes.
+    const StackJoint        &own   = stack_joints[b > 0 ? b - 1 : 0];
+    const double             z_mid = own.middle_z();
     std::vector<StressState> result;
     for (const std::vector<StressState> &states : along)
       {
@@ -808,7 +837,7 @@ namespace coaxfit
         for (const StressState &s : states)
           nearest = std::min(nearest, std::abs(s.z - z_mid));
         for (const StressState &s : states)
-          if (own.whole ? std::abs(s.z - z_mid) <= nearest : s.z == 0.)
+          if (std::abs(s.z - z_mid) <= nearest)
             result.push_back(s);
       }
     return result;
@@ -1488,6 +1517,28 @@ namespace coaxfit
           << std::setw(20) << f.lame_p << std::setw(10) << f.lame_alone_p
           << '\n'
           << std::defaultfloat;
+    // A joint of several pieces: where it bears, each piece's mean, and
+    // where p(0) is taken.
+    for (const JointFigures &f : joints_out)
+      if (!f.pieces.empty())
+        {
+          const StackJoint &joint = stack_joints[&f - &joints_out[0]];
+          out << "  " << f.name << ": " << f.pieces.size() << " pieces, l_F "
+              << joint.length() << " mm:";
+          for (const auto &[from, to, mean] : f.pieces)
+            out << (&from == &f.pieces[0][0] ? " z " : ", z ") << from << " to "
+                << to << " mean " << mean << " MPa";
+          out << "; p(0) at z " << f.mid_plane_z
+              << (std::abs(joint.middle_z()
+                           - (joint.whole ?
+                                0.5 * (joint.z.front() + joint.z.back()) :
+                                0.))
+                      > 0. ?
+                    ", the middle of its longest piece (the joint's middle "
+                    "is not inside one)" :
+                    ", the joint's middle")
+              << '\n';
+        }
     for (const JointFigures &f : joints_out)
       if (!f.closed)
         out << "  " << f.name << ": open at " << f.separated_points << " of "

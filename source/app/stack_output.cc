@@ -49,17 +49,27 @@ namespace coaxfit
     joint_json(const JointFigures &f, const bool slip)
     {
       Json j;
-      j["name"]                   = f.name;
-      j["diameter"]               = f.diameter;
-      j["diametral_interference"] = f.diametral_interference;
-      j["smoothing_loss"]         = f.smoothing_loss;
-      j["effective_interference"] = f.effective_interference;
-      j["pressure"]               = pressure_json(f);
-      j["contact"]                = contact_json(f);
-      j["alone"]                  = {{"pressure",
-                                      {{"at_mid_plane", number_or_null(f.alone_p_mid)},
-                                       {"mean", number_or_null(f.alone_p_mean)}}},
-                                     {"staggered_steps", f.alone_steps}};
+      j["name"]                    = f.name;
+      j["diameter"]                = f.diameter;
+      j["diametral_interference"]  = f.diametral_interference;
+      j["smoothing_loss"]          = f.smoothing_loss;
+      j["effective_interference"]  = f.effective_interference;
+      j["pressure"]                = pressure_json(f);
+      j["pressure"]["mid_plane_z"] = f.mid_plane_z;
+      if (!f.pieces.empty())
+        {
+          j["pieces"] = Json::array();
+          for (const auto &[from, to, mean] : f.pieces)
+            j["pieces"].push_back({{"z_from", from},
+                                   {"z_to", to},
+                                   {"length", to - from},
+                                   {"mean_pressure", number_or_null(mean)}});
+        }
+      j["contact"] = contact_json(f);
+      j["alone"]   = {{"pressure",
+                       {{"at_mid_plane", number_or_null(f.alone_p_mid)},
+                        {"mean", number_or_null(f.alone_p_mean)}}},
+                      {"staggered_steps", f.alone_steps}};
       j["joining"] = {{"interference_max", f.joining_interference},
                       {"interference_from_parts", f.joining_growth},
                       {"clearance", f.joining_clearance},

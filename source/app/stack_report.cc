@@ -201,6 +201,22 @@ namespace coaxfit
            << design_figure(f.lame_p) << " | " << design_figure(f.lame_alone_p)
            << " |\n";
       }
+    // A joint of several pieces: where it bears and where p(0) is.
+    for (unsigned int k = 0; k < joints_out.size(); ++k)
+      if (!joints_out[k].pieces.empty())
+        {
+          const JointFigures &f = joints_out[k];
+          md << "\n"
+             << f.name << " bears on " << f.pieces.size()
+             << " pieces of one diameter, l_F "
+             << design_figure(stack_joints[k].length()) << " mm:";
+          for (const auto &[from, to, mean] : f.pieces)
+            md << (&from == &f.pieces[0][0] ? " z " : "; z ")
+               << design_figure(from) << " to " << design_figure(to)
+               << ", mean " << design_figure(mean) << " MPa";
+          md << ". Its p(0) and the bodies' mid-plane figures are taken at z "
+             << design_figure(f.mid_plane_z) << ".\n";
+        }
     bool friction = false;
     for (const JointFigures &f : joints_out)
       friction = friction || f.friction_coefficient > 0.;

@@ -72,6 +72,8 @@ namespace coaxfit
     if (extension != ".geo" && extension != ".msh")
       throw InputError(
         context + ": a section file must be a gmsh '.geo' or '.msh' file");
+    if (std::filesystem::is_directory(filename))
+      throw InputError(context + ": is a directory, not a gmsh file");
     if (!std::filesystem::is_regular_file(filename)
         || !std::ifstream(filename).good())
       throw InputError(context + ": no such file, or it cannot be read");
@@ -183,8 +185,15 @@ namespace coaxfit
 
   std::string
   resolved_section_file(const std::string &text,
-                        const std::string &parameter_file)
+                        const std::string &parameter_file,
+                        const std::string &entry)
   {
+    // A parameter file's comments begin at '#': the written parameters.prm
+    // could not repeat such a path.
+    if (text.find('#') != std::string::npos)
+      throw InputError("parameter " + entry + " = '" + trimmed(text)
+                       + "': a section file's name may not contain '#' (it "
+                         "begins a comment in a parameter file); rename it");
     const std::filesystem::path given = trimmed(text);
     return std::filesystem::absolute(
              given.is_absolute() ?

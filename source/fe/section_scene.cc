@@ -125,7 +125,8 @@ namespace coaxfit
         both + "the sections meet in " + std::to_string(pieces.size())
         + " pieces along the axis; this version models a joint that is one "
           "cylinder or one cone, beside which a face across the axis may "
-          "touch (a relief groove in the bore is not modelled yet)");
+          "touch (two seats beside a relief groove in the bore are modelled "
+          "for the bodies written as a stack: Assembly/Bodies = Shaft, Hub)");
     const JointPiece &joint = pieces.front();
     // A cone up to 30 degrees from the axis (tapers are 1:50 to 1:5, 0.6 to
     // 5.7 degrees); steeper joints are faces more than cones.

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace coaxfit
 {
@@ -38,8 +39,10 @@ namespace coaxfit
       extent = std::max(extent, outline->extent());
     const double tol = 1e-6 * extent;
 
-    // Each body meets the next one out on one cylinder.
+    // Each body meets the next one out on a cylinder: one piece, or
+    // several of one diameter (a relief groove between two seats).
     std::vector<double> z_lo(N - 1), z_hi(N - 1);
+    drawn_pieces.resize(N - 1);
     for (unsigned int k = 0; k + 1 < N; ++k)
       {
         const std::string both
@@ -49,14 +52,26 @@ namespace coaxfit
         // A face across the axis beside the joint (a wheel against a
         // shaft's shoulder) is set aside: it carries no force (below).
         std::vector<JointPiece> faces = faces_across_axis(pieces, tol);
+        const auto              on_one_cylinder = [&]() {
+          for (const JointPiece &piece : pieces)
+            if (std::abs(piece.start[0] - pieces[0].start[0]) > tol
+                || std::abs(piece.end[0] - pieces[0].start[0]) > tol)
+              return false;
+          return !pieces.empty();
+        };
         // Sections that meet within the drawing tolerance: corners on the
         // joint's cylinder moved onto it exactly, so that both meshes have
         // it (a file's mesh is not moved).
-        if (pieces.size() == 1
-            && std::abs(pieces[0].start[0] - pieces[0].end[0]) <= tol)
+        if (on_one_cylinder())
           {
-            const Point<2> a = pieces[0].start,
-                           c(pieces[0].start[0], pieces[0].end[1]);
+            double lo = pieces[0].start[1], hi = lo;
+            for (const JointPiece &piece : pieces)
+              for (const double z : {piece.start[1], piece.end[1]})
+                {
+                  lo = std::min(lo, z);
+                  hi = std::max(hi, z);
+                }
+            const Point<2> a(pieces[0].start[0], lo), c(pieces[0].start[0], hi);
             for (const unsigned int b : {k, k + 1})
               if (!files[b])
                 drawn[b] = std::make_unique<SectionOutline>(
@@ -64,29 +79,44 @@ namespace coaxfit
             pieces = merged(find_joint(*drawn[k], *drawn[k + 1]), tol);
             faces  = faces_across_axis(pieces, tol);
           }
-        if (pieces.size() != 1)
+        for (const JointPiece &joint : pieces)
+          {
+            if (std::abs(joint.start[0] - joint.end[0]) > tol)
+              throw InputError(
+                both + "the joint from z = " + number(joint.start[1], 6)
+                + ", D = " + number(2. * joint.start[0], 6)
+                + " to z = " + number(joint.end[1], 6)
+                + ", D = " + number(2. * joint.end[0], 6)
+                + " is not a cylinder; a joint of a stack is a cylinder in "
+                  "this version (taper fits are modelled for two bodies)");
+            if (joint.normal[0] < 0.)
+              throw InputError(both
+                               + "the first section lies outside the second "
+                                 "at their joint; Assembly/Bodies lists "
+                                 "the bodies inside out");
+          }
+        if (!on_one_cylinder())
           throw InputError(
-            both + "the sections meet in " + std::to_string(pieces.size())
-            + " pieces along the axis; a joint of a stack is one cylinder "
-              "in this version, beside which a face across the axis may "
-              "touch (a relief groove or a second seat is not modelled in "
-              "a stack yet)");
-        const JointPiece &joint = pieces.front();
-        if (std::abs(joint.start[0] - joint.end[0]) > tol)
-          throw InputError(
-            both + "the joint from z = " + number(joint.start[1], 6)
-            + ", D = " + number(2. * joint.start[0], 6) + " to z = "
-            + number(joint.end[1], 6) + ", D = " + number(2. * joint.end[0], 6)
-            + " is not a cylinder; a joint of a stack is a cylinder in this "
-              "version (taper fits are modelled for two bodies)");
-        if (joint.normal[0] < 0.)
-          throw InputError(both
-                           + "the first section lies outside the second "
-                             "at their joint; Assembly/Bodies lists "
-                             "the bodies inside out");
-        radius.push_back(joint.start[0]);
-        z_lo[k] = std::min(joint.start[1], joint.end[1]);
-        z_hi[k] = std::max(joint.start[1], joint.end[1]);
+            both + "the sections meet on cylinders of "
+            + std::to_string(pieces.size())
+            + " pieces with different diameters (D = "
+            + number(2. * pieces[0].start[0], 6) + " and "
+            + number(2. * pieces.back().start[0], 6)
+            + "); a joint of a stack is one diameter in this version "
+              "(a stepped seat is not modelled); allowed: pieces of one "
+              "diameter, such as two seats beside a relief groove");
+        radius.push_back(pieces[0].start[0]);
+        z_lo[k] = std::numeric_limits<double>::infinity();
+        z_hi[k] = -z_lo[k];
+        for (const JointPiece &piece : pieces)
+          {
+            const double lo = std::min(piece.start[1], piece.end[1]),
+                         hi = std::max(piece.start[1], piece.end[1]);
+            drawn_pieces[k].emplace_back(lo, hi);
+            z_lo[k] = std::min(z_lo[k], lo);
+            z_hi[k] = std::max(z_hi[k], hi);
+          }
+        std::sort(drawn_pieces[k].begin(), drawn_pieces[k].end());
         shoulders.push_back(
           shoulder_beside(faces, z_lo[k], z_hi[k], tol, both));
         half_length.push_back(0.5 * (z_hi[k] - z_lo[k]));
@@ -157,6 +187,23 @@ namespace coaxfit
       }
     half_model_ = symmetric;
 
+    // The joints' pieces in the model's z: a half model's from the plane
+    // on (a piece across it from z = 0, one beyond it whole).
+    pieces.assign(N - 1, {});
+    for (unsigned int k = 0; k + 1 < N; ++k)
+      for (auto [lo, hi] : drawn_pieces[k])
+        {
+          lo -= z_m;
+          hi -= z_m;
+          if (half_model_)
+            {
+              if (hi <= tol)
+                continue;
+              lo = lo <= tol ? 0. : lo;
+            }
+          pieces[k].emplace_back(lo, hi);
+        }
+
     // A file's nodes on its joints: its neighbour is meshed with them.
     file_joint_z.assign(N - 1, {});
     for (unsigned int k = 0; k + 1 < N; ++k)
@@ -164,15 +211,16 @@ namespace coaxfit
         if (files[b])
           {
             const unsigned int  other = b == k ? k + 1 : k;
-            std::vector<double> z     = file_nodes_on_joint(
-              b, k, z_lo[k], z_hi[k], tol, entries[b], entries[other]);
+            std::vector<double> z
+              = file_nodes_on_joint(b, k, tol, entries[b], entries[other]);
             if (file_joint_z[k].empty())
               file_joint_z[k] = z;
             else
               {
                 bool same = z.size() == file_joint_z[k].size();
                 for (unsigned int i = 0; same && i < z.size(); ++i)
-                  same = std::abs(z[i] - file_joint_z[k][i]) <= tol;
+                  same = std::abs(z[i] - file_joint_z[k][i])
+                         <= 1e-10 * this->extent();
                 if (!same)
                   throw InputError(
                     "parameters " + entries[k] + " and " + entries[k + 1]
@@ -193,8 +241,6 @@ namespace coaxfit
   std::vector<double>
   StackSections::file_nodes_on_joint(const unsigned int b,
                                      const unsigned int k,
-                                     const double       z_lo,
-                                     const double       z_hi,
                                      const double       tol,
                                      const std::string &entry,
                                      const std::string &other) const
@@ -206,15 +252,17 @@ namespace coaxfit
         if (face->at_boundary() && std::abs(face->vertex(0)[0] - R) <= tol
             && std::abs(face->vertex(1)[0] - R) <= tol)
           for (const unsigned int v : {0u, 1u})
-            if (face->vertex(v)[1] >= z_lo - tol
-                && face->vertex(v)[1] <= z_hi + tol)
+            if (on_piece(k, face->vertex(v)[1], tol))
               z.push_back(face->vertex(v)[1]);
     std::sort(z.begin(), z.end());
     std::vector<double> unique;
     for (const double zi : z)
       if (unique.empty() || zi - unique.back() > tol)
         unique.push_back(zi);
-    for (const double end : {z_lo, z_hi})
+    std::vector<double> ends;
+    for (const auto &[lo, hi] : pieces[k])
+      ends.insert(ends.end(), {lo, hi});
+    for (const double end : ends)
       {
         const auto near
           = std::find_if(unique.begin(), unique.end(), [&](const double zi) {
@@ -228,7 +276,20 @@ namespace coaxfit
             + " ends (a corner of that section lies on a face of this "
               "mesh); a stack's joint shares its nodes, so add a point "
               "there to the file, or make the sections end together");
-        *near = end; // the neighbour's corner exactly
+        // The neighbour's corner: the same point to the coupling's
+        // precision, or refused (a corner 1e-6 mm off the node would
+        // leave the two meshes' joint points apart).
+        const double close = 1e-10 * extent();
+        if (std::abs(*near - end) > close)
+          throw InputError(
+            "parameter " + entry + " = '" + file_paths[b]
+            + "': its mesh's node at z = " + number(*near, 12) + " is "
+            + number(std::abs(*near - end), 3) + " mm from z = "
+            + number(end, 12) + ", where its joint with " + other
+            + " ends; a stack's joint shares its nodes, so they must "
+              "coincide (within "
+            + number(close, 3) + " mm): move the point or the corner");
+        *near = end;
       }
     return unique;
   }
@@ -252,11 +313,11 @@ namespace coaxfit
             types::boundary_id id
               = p[0] <= tol && q[0] <= tol ? BoundaryId::axis : SectionId::free;
             for (const unsigned int k : {b - 1, b})
-              if (k + 1 < N // b - 1 wraps round for b = 0
+              if (k < N - 1 // b - 1 wraps round for b = 0
                   && std::abs(p[0] - radius[k]) <= tol
-                  && std::abs(q[0] - radius[k]) <= tol
-                  && std::min(p[1], q[1]) >= joint_start(k) - tol
-                  && std::max(p[1], q[1]) <= joint_end(k) + tol)
+                  && std::abs(q[0] - radius[k]) <= tol && on_piece(k, p[1], tol)
+                  && on_piece(k, q[1], tol)
+                  && on_piece(k, 0.5 * (p[1] + q[1]), tol))
                 id = k + 1 == b && b + 1 < N ? BoundaryId::inner_joint :
                                                BoundaryId::joint;
             face->set_boundary_id(id);
@@ -323,32 +384,64 @@ namespace coaxfit
 
 
 
+  bool
+  StackSections::on_piece(const unsigned int k,
+                          const double       z,
+                          const double       tol) const
+  {
+    for (const auto &[lo, hi] : pieces[k])
+      if (z >= lo - tol && z <= hi + tol)
+        return true;
+    return false;
+  }
+
+
+
   std::vector<Point<2>>
   StackSections::joint_vertices(const unsigned int         k,
+                                const unsigned int         i,
                                 const SectionMeshSettings &settings) const
   {
-    const double h_max = settings.max_cell_size > 0. ? settings.max_cell_size :
-                                                       8. * settings.cell_size;
-    const std::vector<double> from_middle = joint_offsets(
-      half_length[k], settings.cell_size, settings.grading_ratio, h_max);
-    // A whole joint: graded from both ends, a vertex at its middle.
-    const double        middle = joint_middle(k);
+    const auto [lo, hi]   = pieces[k][i];
+    const double        R = radius[k];
     std::vector<double> z;
-    if (!half_model_)
+    if (!file_joint_z[k].empty())
       {
-        for (const double x : from_middle)
-          z.push_back(middle - x);
-        z.push_back(middle);
+        // A file's nodes on the piece.
+        const double tol = 1e-9 * (hi - lo);
+        for (const double zi : file_joint_z[k])
+          if (zi >= lo - tol && zi <= hi + tol)
+            z.push_back(zi);
       }
-    for (auto x = from_middle.rbegin(); x != from_middle.rend(); ++x)
-      z.push_back(middle + *x);
-    const double R = radius[k];
-    z              = with_corners(
-      z,
-      {half[k].get(), half[k + 1].get()},
-      [R](const double) { return R; },
-      start[k],
-      start[k] + (half_model_ ? 1. : 2.) * half_length[k]);
+    else
+      {
+        const double h_max = settings.max_cell_size > 0. ?
+                               settings.max_cell_size :
+                               8. * settings.cell_size;
+        // A piece from a half model's plane: graded towards its end; any
+        // other graded from both ends, a vertex at its middle.
+        const bool                from_plane = half_model_ && lo == 0.;
+        const double              middle = from_plane ? 0. : 0.5 * (lo + hi);
+        const std::vector<double> from_middle
+          = joint_offsets(from_plane ? hi : 0.5 * (hi - lo),
+                          settings.cell_size,
+                          settings.grading_ratio,
+                          h_max);
+        if (!from_plane)
+          {
+            for (const double x : from_middle)
+              z.push_back(middle - x);
+            z.push_back(middle);
+          }
+        for (auto x = from_middle.rbegin(); x != from_middle.rend(); ++x)
+          z.push_back(middle + *x);
+        z = with_corners(
+          z,
+          {half[k].get(), half[k + 1].get()},
+          [R](const double) { return R; },
+          lo,
+          hi);
+      }
     std::vector<Point<2>> vertices;
     for (const double zi : z)
       vertices.emplace_back(R, zi);
@@ -360,22 +453,19 @@ namespace coaxfit
   std::vector<std::shared_ptr<Triangulation<2>>>
   StackSections::make_meshes(const SectionMeshSettings &settings) const
   {
-    const unsigned int         N = n_bodies();
-    std::vector<TaggedSegment> joints;
+    const unsigned int                      N = n_bodies();
+    std::vector<std::vector<TaggedSegment>> joints(N - 1);
     for (unsigned int k = 0; k + 1 < N; ++k)
-      {
-        TaggedSegment joint{Point<2>(radius[k], start[k]),
-                            Point<2>(radius[k], joint_end(k)),
-                            BoundaryId::joint};
-        if (file_joint_z[k].empty())
-          joint.vertices = joint_vertices(k, settings);
-        else
-          for (const double z : file_joint_z[k])
-            joint.vertices.emplace_back(radius[k], z);
-        // The middle of a half model's joint is no end.
-        joint.refine_ends = !half_model_;
-        joints.push_back(joint);
-      }
+      for (unsigned int i = 0; i < pieces[k].size(); ++i)
+        {
+          TaggedSegment joint{Point<2>(radius[k], pieces[k][i].first),
+                              Point<2>(radius[k], pieces[k][i].second),
+                              BoundaryId::joint};
+          joint.vertices = joint_vertices(k, i, settings);
+          // A half model's plane is no end.
+          joint.refine_ends = !(half_model_ && pieces[k][i].first == 0.);
+          joints[k].push_back(joint);
+        }
     std::vector<std::shared_ptr<Triangulation<2>>> meshes(N);
     // Every outline's cells split, or none: the joints' vertices must
     // match (then a file's mesh is refined once more, which splits its
@@ -392,13 +482,16 @@ namespace coaxfit
             continue;
           SectionBoundary boundary;
           if (b > 0)
-            {
-              boundary.segments.push_back(joints[b - 1]);
-              if (b + 1 < N)
-                boundary.segments.back().boundary_id = BoundaryId::inner_joint;
-            }
+            for (TaggedSegment piece : joints[b - 1])
+              {
+                if (b + 1 < N)
+                  piece.boundary_id = BoundaryId::inner_joint;
+                boundary.segments.push_back(piece);
+              }
           if (b + 1 < N)
-            boundary.segments.push_back(joints[b]);
+            boundary.segments.insert(boundary.segments.end(),
+                                     joints[b].begin(),
+                                     joints[b].end());
           const SectionOutline &outline = *half[b];
           if (half_model_)
             for (const TaggedSegment &plane : symmetry_segments(outline))
@@ -407,11 +500,12 @@ namespace coaxfit
           local.refinement_points.clear();
           for (const unsigned int k : {b - 1, b})
             if (k < joints.size()) // b - 1 wraps round for b = 0
-              {
-                local.refinement_points.push_back(joints[k].end);
-                if (!half_model_)
-                  local.refinement_points.push_back(joints[k].start);
-              }
+              for (const TaggedSegment &piece : joints[k])
+                {
+                  local.refinement_points.push_back(piece.end);
+                  if (piece.refine_ends)
+                    local.refinement_points.push_back(piece.start);
+                }
           local.full_quad = full_quad;
           meshes[b]       = std::make_shared<Triangulation<2>>();
           split += make_section_mesh(*meshes[b], outline, boundary, local);

@@ -1438,7 +1438,8 @@ namespace coaxfit
           {"Hub section", &parameters.drawing.hub_section}})
       if (is_section_file_name(*text))
         {
-          const std::string resolved = resolved_section_file(*text, filename);
+          const std::string resolved
+            = resolved_section_file(*text, filename, "Geometry/" + entry);
           prm.enter_subsection("Geometry");
           prm.set(entry, resolved);
           prm.leave_subsection();

@@ -1236,7 +1236,8 @@ namespace coaxfit
             texts.push_back(outline.str());
           }
       p.sections = std::make_shared<const StackSections>(entries, texts);
-      for (unsigned int b = 0; b < p.bodies.size(); ++b)
+      const unsigned int N = p.bodies.size();
+      for (unsigned int b = 0; b < N; ++b)
         if (!p.section_text[b].empty())
           {
             p.rings[b].inner_diameter
@@ -1244,6 +1245,15 @@ namespace coaxfit
             p.rings[b].outer_diameter
               = p.sections->equivalent_outer_diameter(b);
             p.rings[b].length = p.sections->length(b);
+          }
+        else
+          {
+            // A ring's joints at the joints' diameters, which a section
+            // beside it may set within the drawing tolerance.
+            if (b > 0)
+              p.rings[b].inner_diameter = 2. * p.sections->joint_radius(b - 1);
+            if (b + 1 < N)
+              p.rings[b].outer_diameter = 2. * p.sections->joint_radius(b);
           }
     }
   } // namespace
@@ -1472,7 +1482,9 @@ namespace coaxfit
       if (is_section_file_name(p.section_text[b]))
         {
           p.section_text[b]
-            = resolved_section_file(p.section_text[b], filename);
+            = resolved_section_file(p.section_text[b],
+                                    filename,
+                                    "Geometry/" + p.bodies[b] + " section");
           prm.enter_subsection("Geometry");
           prm.set(p.bodies[b] + " section", p.section_text[b]);
           prm.leave_subsection();

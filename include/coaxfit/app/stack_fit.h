@@ -11,6 +11,7 @@
 #include <coaxfit/solvers/condensed_body.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
 #include <memory>
@@ -28,14 +29,21 @@ namespace coaxfit
    */
   struct JointFigures
   {
-    std::string  name;
-    double       diameter;                    ///< mm
-    double       diametral_interference;      ///< mm, nominal
-    double       smoothing_loss;              ///< mm, 0.8 (Rz_i + Rz_o)
-    double       effective_interference;      ///< mm, U_w (solved with)
-    double       p_mid, p_mean, p_min, p_max; ///< MPa, in the assembly
-    bool         closed;                      ///< every point in contact
-    double       contact_length;              ///< mm, full length in contact
+    std::string name;
+    double      diameter;                    ///< mm
+    double      diametral_interference;      ///< mm, nominal
+    double      smoothing_loss;              ///< mm, 0.8 (Rz_i + Rz_o)
+    double      effective_interference;      ///< mm, U_w (solved with)
+    double      p_mid, p_mean, p_min, p_max; ///< MPa, in the assembly
+    double      mid_plane_z;                 ///< drawing z of p_mid (mm)
+    /**
+     * A joint of several pieces (seats beside a relief groove): each
+     * piece's drawing z from and to (mm) and its mean pressure (MPa);
+     * empty for one piece.
+     */
+    std::vector<std::array<double, 3>> pieces;
+    bool                               closed; ///< every point in contact
+    double       contact_length;               ///< mm, full length in contact
     unsigned int separated_points;
     /**
      * The diametral gap 2 (u_outer - u_inner - d) left where the joint is

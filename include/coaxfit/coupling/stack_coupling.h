@@ -14,6 +14,7 @@
 #include <mutex>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
@@ -48,6 +49,12 @@ namespace coaxfit
      * common plane of symmetry); else its half from the mid-plane z = 0.
      */
     bool whole = false;
+    /**
+     * The pieces the joint bears on (mm, model z, ascending): empty for
+     * one piece from the first point to the last; else several of one
+     * diameter, the stretches between them (a relief groove) free.
+     */
+    std::vector<std::pair<double, double>> pieces;
 
     unsigned int
     n_points() const
@@ -55,23 +62,67 @@ namespace coaxfit
       return z.size();
     }
 
-    /** The joint's length l_F (mm): twice the half model's. */
-    double
-    length() const
+    /** Whether the stretch from point @p i to point i + 1 bears. */
+    bool
+    bearing(const unsigned int i) const
     {
-      return whole ? z.back() - z.front() : 2. * z.back();
+      if (pieces.empty())
+        return true;
+      const double m = 0.5 * (z[i] + z[i + 1]);
+      for (const auto &[lo, hi] : pieces)
+        if (m > lo && m < hi)
+          return true;
+      return false;
     }
 
     /**
-     * The point at the joint's middle (the mid-plane's of a half model;
-     * a whole joint's nearest to its middle).
+     * The joint's length l_F (mm): the length it bears on, twice the half
+     * model's (a relief groove not counted).
      */
+    double
+    length() const
+    {
+      double l = 0.;
+      for (unsigned int i = 0; i + 1 < n_points(); ++i)
+        l += bearing(i) ? z[i + 1] - z[i] : 0.;
+      return whole ? l : 2. * l;
+    }
+
+    /**
+     * Model z of the joint's mid-plane: its middle (0 in a half model);
+     * where that is not inside a piece (in a relief groove, or at a
+     * groove's edge), the middle of its longest piece, its main seat.
+     */
+    double
+    middle_z() const
+    {
+      const double m = whole ? 0.5 * (z.front() + z.back()) : 0.;
+      if (pieces.empty())
+        return m;
+      const double tol = 1e-9 * (z.back() - z.front());
+      for (const auto &[lo, hi] : pieces)
+        if ((m > lo + tol || (!whole && lo == 0.)) && m < hi - tol)
+          return m;
+      // A half model's piece from the plane is half of one.
+      const auto full = [&](const std::pair<double, double> &piece) {
+        return (!whole && piece.first == 0. ? 2. : 1.)
+               * (piece.second - piece.first);
+      };
+      const auto longest = std::max_element(pieces.begin(),
+                                            pieces.end(),
+                                            [&](const auto &a, const auto &b) {
+                                              return full(a) < full(b);
+                                            });
+      return longest->first == 0. && !whole ?
+               0. :
+               0.5 * (longest->first + longest->second);
+    }
+
+    /** The point nearest the joint's mid-plane (middle_z()). */
     unsigned int
     middle() const
     {
-      if (!whole)
-        return 0;
-      const double m    = 0.5 * (z.front() + z.back());
+      const double m    = middle_z();
       unsigned int best = 0;
       for (unsigned int i = 1; i < n_points(); ++i)
         if (std::abs(z[i] - m) < std::abs(z[best] - m))

@@ -65,10 +65,13 @@ namespace coaxfit
    * @p parameter_file: relative to that file's directory unless absolute,
    * written absolute and normal, so that a run's parameters.prm repeats it
    * from anywhere.
+   * @throws InputError naming @p entry if the name has a '#' (a comment
+   * in a parameter file).
    */
   std::string
   resolved_section_file(const std::string &text,
-                        const std::string &parameter_file);
+                        const std::string &parameter_file,
+                        const std::string &entry);
 
   /**
    * The boundary of the section mesh @p triangulation (as read by

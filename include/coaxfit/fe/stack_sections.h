@@ -7,9 +7,11 @@
 #include <coaxfit/fe/section_mesh.h>
 #include <coaxfit/fe/section_outline.h>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
@@ -23,8 +25,10 @@ namespace coaxfit
    * out (its joint), the plane about which the whole stack is symmetric,
    * and the half sections the model meshes.
    *
-   * This version models stacks whose every joint is one cylinder, beside
-   * which a face across the axis may touch (a shoulder). A
+   * This version models stacks whose every joint is a cylinder, beside
+   * which a face across the axis may touch (a shoulder): one piece, or
+   * several of one diameter (two seats beside a relief groove in a bore;
+   * each piece meshed as a joint, the groove free). A
    * stack whose sections are all symmetric about one plane across the
    * axis through the middle of every joint (a gear wheel with a web
    * between its boss and its rim seat, a flanged sleeve, rings of
@@ -102,7 +106,25 @@ namespace coaxfit
       return radius[k];
     }
 
-    /** The half length of joint @p k (mm). */
+    /**
+     * The pieces of joint @p k in the model's z (mm), ascending: one
+     * cylinder, or several of one diameter (two seats beside a relief
+     * groove); a half model's from its plane on.
+     */
+    const std::vector<std::pair<double, double>> &
+    joint_pieces(unsigned int k) const
+    {
+      return pieces[k];
+    }
+
+    /** The pieces of joint @p k in the drawing's z (mm), ascending. */
+    const std::vector<std::pair<double, double>> &
+    joint_drawn_pieces(unsigned int k) const
+    {
+      return drawn_pieces[k];
+    }
+
+    /** The half length of joint @p k, from end to end (mm). */
     double
     joint_half_length(unsigned int k) const
     {
@@ -211,6 +233,8 @@ namespace coaxfit
     std::vector<double>                          outer_mean; ///< per joint
     std::vector<std::optional<ShoulderFace>>     shoulders;  ///< per joint
     std::vector<double>                          start; ///< joints' model z
+    /** Per joint: its pieces, (lo, hi) in the drawing's and the model's z. */
+    std::vector<std::vector<std::pair<double, double>>> drawn_pieces, pieces;
     /** Per body: the mesh of its gmsh file, unrefined; null: an outline. */
     std::vector<std::shared_ptr<const Triangulation<2>>> files;
     std::vector<std::string> file_paths; ///< per body, as given (resolved)
@@ -224,15 +248,13 @@ namespace coaxfit
 
     /**
      * The z of the vertices of the mesh of the file of body @p b on joint
-     * @p k (ascending, merged within @p tol).
+     * @p k's pieces (ascending, merged within @p tol).
      * @throws InputError naming the entry @p entry if it has none at an end
-     * of the joint, where the neighbour's section has its corner.
+     * of a piece, where the neighbour's section has its corner.
      */
     std::vector<double>
     file_nodes_on_joint(unsigned int       b,
                         unsigned int       k,
-                        double             z_lo,
-                        double             z_hi,
                         double             tol,
                         const std::string &entry,
                         const std::string &other) const;
@@ -245,9 +267,28 @@ namespace coaxfit
     void
     tag_file_mesh(Triangulation<2> &mesh, unsigned int b) const;
 
-    /** The vertices of joint @p k between its ends, ascending. */
+    /** The largest extent of the sections (mm). */
+    double
+    extent() const
+    {
+      double e = 0.;
+      for (const auto &outline : drawn)
+        e = std::max(e, outline->extent());
+      return e;
+    }
+
+    /** Whether model z @p z lies on a piece of joint @p k (within @p tol). */
+    bool
+    on_piece(unsigned int k, double z, double tol) const;
+
+    /**
+     * The vertices of piece @p i of joint @p k between its ends, ascending:
+     * a file's nodes there, else graded from the cell size at its ends.
+     */
     std::vector<Point<2>>
-    joint_vertices(unsigned int k, const SectionMeshSettings &settings) const;
+    joint_vertices(unsigned int               k,
+                   unsigned int               i,
+                   const SectionMeshSettings &settings) const;
   };
 } // namespace coaxfit
 

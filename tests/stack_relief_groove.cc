@@ -1,0 +1,225 @@
+// A joint of several pieces in a stack: a hub whose bore has a relief
+// groove, so that it bears on the shaft on two seats of one diameter, run
+// as a user runs it (Assembly/Bodies = Shaft, Hub and Geometry/Hub
+// section). Steel shaft D 50, 80 mm long; steel hub D 50-100, 50 mm long,
+// its bore D 54 over the groove; U = 0.05 mm.
+//
+// 1. The groove in the middle (z -5 to 5; the half model) and off it
+//    (z -10 to 0; modelled whole) against an independent CalculiX 2.20
+//    solution that is not in the repository: CAX8 elements on structured
+//    meshes of 0.5, 0.25 and 0.125 mm at the pieces' ends, the facing
+//    nodes of the seats tied radially to the interference (exact
+//    frictionless contact; every tie in compression), pressures -sigma_rr
+//    at the contact nodes, forces from the hub's hoop stress. Its finest
+//    mesh's figures, which the coarser ones meet within 0.2 % (points 2 mm
+//    from an end) and 0.02 % (means), are below: the pressure at interior
+//    points of the seats within 0.3 %, the means (the joint's and each
+//    seat's) within 0.1 % (CalculiX's hub and shaft integrals differ by
+//    0.05 %), the hub's outer displacement within 0.05 %.
+//    l_F is the bearing length (40 mm, the groove not counted): the torque
+//    capacity over nu p_mean pi D^2 / 2 gives it to 1e-12, the contact
+//    length too; p(0) is taken at the middle of the longest seat where the
+//    joint's middle is not inside one.
+// 2. Staggered in both orderings = monolithic (1e-8): the offset groove,
+//    and three bodies with the grooved hub in the middle (a rim shrunk on
+//    it).
+// 3. The grooved hub drawn in gmsh (a .geo with a point at each seat's
+//    end) against its outline: the means within 2e-4.
+
+#include "run_executable.h"
+#include "run_summary.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+using namespace coaxfit_test;
+
+namespace
+{
+  /** The stack of a shaft and a hub whose bore has the groove @p g1..g2. */
+  std::string
+  groove_prm(const std::string &hub_section, const bool rim = false)
+  {
+    std::string s = "subsection Assembly\n  set Bodies = Shaft, Hub";
+    s += rim ? ", Rim" : "";
+    s += "\n  set Report surfaces = Hub outer\nend\n"
+         "subsection Geometry\n  subsection Shaft\n"
+         "    set Inner diameter = 0\n    set Outer diameter = 50\n"
+         "    set Length = 80\n  end\n  set Hub section = "
+         + hub_section + "\n";
+    if (rim)
+      s += "  subsection Rim\n    set Inner diameter = 100\n"
+           "    set Outer diameter = 140\n    set Length = 50\n  end\n";
+    s += "end\nsubsection Material\n";
+    for (const std::string body : {"Shaft", "Hub", "Rim"})
+      if (body != "Rim" || rim)
+        s += "  subsection " + body
+             + "\n    set E = 210000\n    set nu = 0.3\n  end\n";
+    s += "end\nsubsection Fit\n  set Diametral interference = 0.05\n"
+         "  set Friction coefficient = 0.1\n"
+         "end\nsubsection Mesh\n  set Global refinements = 1\nend\n"
+         "subsection Coupling\n  set Tolerance = 1e-10\nend\n";
+    return s;
+  }
+
+  /** The hub's outline with its bore's groove from @p g1 to @p g2. */
+  std::string
+  hub_outline(const std::string &g1, const std::string &g2)
+  {
+    return "-25, 50; " + g1 + ", 50; " + g1 + ", 54; " + g2 + ", 54; " + g2
+           + ", 50; 25, 50; 25, 100; -25, 100; -25, 50";
+  }
+
+  /** p at drawing z @p z of the run in @p dir (linear between points). */
+  double
+  pressure_at(const std::string &dir, const double z)
+  {
+    std::ifstream in(dir + "/contact_pressure_Shaft-Hub.csv");
+    std::string   line;
+    std::vector<std::pair<double, double>> profile;
+    std::getline(in, line);
+    const bool drawing = line.find("z_drawing_mm") != std::string::npos;
+    while (std::getline(in, line))
+      {
+        std::vector<double> fields;
+        std::istringstream  f(line);
+        for (std::string x; std::getline(f, x, ',');)
+          fields.push_back(std::stod(x));
+        profile.emplace_back(drawing ? fields.back() : fields[0], fields[1]);
+      }
+    std::sort(profile.begin(), profile.end());
+    return profile_at(profile, z);
+  }
+
+  /** Part 1: the run @p name of @p hub against CalculiX's figures. */
+  void
+  check_calculix(const std::string         &name,
+                 const std::string         &hub,
+                 const std::vector<double> &z,
+                 const std::vector<double> &p,
+                 const double               mean,
+                 const std::vector<double> &piece_means,
+                 const double               hub_outer)
+  {
+    std::ofstream(name + ".prm") << groove_prm(hub);
+    std::filesystem::remove_all(name);
+    const RunResult      r = run_coaxfit(name, quiet + name + ".prm");
+    const nlohmann::json s = read_summary(name);
+    const auto          &j = s["joints"][0];
+    std::cout << name << ": exit " << r.exit_code << ", converged "
+              << s["converged"] << ", model "
+              << s["mesh"]["model"].get<std::string>() << '\n';
+    for (unsigned int i = 0; i < z.size(); ++i)
+      std::cout << "  p at z " << z[i] << ": "
+                << agreement(pressure_at(name, z[i]), p[i], 3e-3) << " ("
+                << p[i] << " MPa)\n";
+    std::cout << "  mean: " << agreement(j["pressure"]["mean"], mean, 1e-3)
+              << " (" << mean << " MPa)\n";
+    for (unsigned int i = 0; i < piece_means.size(); ++i)
+      std::cout << "  seat z " << j["pieces"][i]["z_from"].get<double>()
+                << " to " << j["pieces"][i]["z_to"].get<double>() << ": mean "
+                << agreement(j["pieces"][i]["mean_pressure"],
+                             piece_means[i],
+                             1e-3)
+                << " (" << piece_means[i] << " MPa)\n";
+    std::cout << "  Hub outer u_r mean: "
+              << agreement(s["surfaces"][0]["u_r"]["mean"], hub_outer, 5e-4)
+              << " (" << hub_outer << " mm)\n";
+    const double mu = 0.1, D = 50.;
+    const double l
+      = j["design"]["torque_capacity"].get<double>() * 2000.
+        / (mu * j["pressure"]["mean"].get<double>() * M_PI * D * D);
+    std::cout << "  l_F from the torque capacity: "
+              << (std::abs(l - 40.) < 1e-12 * 40. ? "40 mm" : "NOT 40 mm")
+              << ", contact length "
+              << (std::abs(j["contact"]["length"].get<double>() - 40.)
+                      < 1e-12 * 40. ?
+                    "40 mm" :
+                    "NOT 40 mm")
+              << ", p(0) taken at z " << j["pressure"]["mid_plane_z"] << '\n';
+  }
+
+  /** Part 2: staggered in both orderings against monolithic. */
+  void
+  check_methods(const std::string &name, const std::string &prm)
+  {
+    std::ofstream(name + ".prm") << prm;
+    std::vector<double> monolithic;
+    for (const std::string method : {"--set Solver/Method=monolithic",
+                                     "--set Coupling/Ordering=gauss-seidel",
+                                     "--set Coupling/Ordering=jacobi"})
+      {
+        std::filesystem::remove_all(name);
+        const RunResult r
+          = run_coaxfit(name, quiet + method + " " + name + ".prm");
+        const std::vector<double> p = joint_pressures(read_summary(name));
+        std::cout << name << ", " << method.substr(6) << ": exit "
+                  << r.exit_code;
+        if (monolithic.empty())
+          monolithic = p;
+        else
+          std::cout << ", against the monolithic solution: "
+                    << (difference(p, monolithic) <= 1e-8 ? "agrees" :
+                                                            "DIFFERS")
+                    << " (1e-8)";
+        std::cout << '\n';
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << "1. Against CalculiX\n";
+  check_calculix("middle",
+                 hub_outline("-5", "5"),
+                 {7., 10., 15., 20., 23.},
+                 {114.22, 88.08, 79.68, 79.99, 89.07},
+                 94.27,
+                 {94.27, 94.27},
+                 0.0122782);
+  check_calculix("offset",
+                 hub_outline("-10", "0"),
+                 {-22., -17., -13., 3., 8., 13., 18., 22.},
+                 {86.02, 83.52, 99.77, 100.81, 82.11, 78.12, 77.50, 83.26},
+                 94.269,
+                 {100.04, 90.805},
+                 0.0122810);
+
+  std::cout << "\n2. Staggered and monolithic\n";
+  check_methods("offset_methods", groove_prm(hub_outline("-10", "0")));
+  check_methods("rim", groove_prm(hub_outline("-5", "5"), true));
+
+  std::cout << "\n3. The grooved hub from a gmsh file\n";
+  std::ofstream("hub.geo")
+    << "h = 0.5; H = 2.5;\n"
+       "Point(1) = {25, -25, 0, h};\nPoint(2) = {25, -5, 0, h};\n"
+       "Point(3) = {27, -5, 0, h};\nPoint(4) = {27, 5, 0, h};\n"
+       "Point(5) = {25, 5, 0, h};\nPoint(6) = {25, 25, 0, h};\n"
+       "Point(7) = {50, 25, 0, H};\nPoint(8) = {50, -25, 0, H};\n"
+       "Point(9) = {25, -15, 0, H};\nPoint(10) = {25, 15, 0, H};\n"
+       "Line(1) = {1, 9};\nLine(2) = {9, 2};\nLine(3) = {2, 3};\n"
+       "Line(4) = {3, 4};\nLine(5) = {4, 5};\nLine(6) = {5, 10};\n"
+       "Line(7) = {10, 6};\nLine(8) = {6, 7};\nLine(9) = {7, 8};\n"
+       "Line(10) = {8, 1};\nCurve Loop(1) = {1:10};\n"
+       "Plane Surface(1) = {1};\nRecombine Surface{1};\n";
+  std::vector<double> means;
+  for (const std::string name : {"outline", "file"})
+    {
+      std::ofstream(name + ".prm")
+        << groove_prm(name == "file" ? "hub.geo" : hub_outline("-5", "5"));
+      std::filesystem::remove_all(name);
+      const RunResult      r = run_coaxfit(name, quiet + name + ".prm");
+      const nlohmann::json s = read_summary(name);
+      std::cout << name << ": exit " << r.exit_code << ", model "
+                << s["mesh"]["model"].get<std::string>() << '\n';
+      means.push_back(s["joints"][0]["pressure"]["mean"]);
+    }
+  std::cout << "  mean from the file: " << agreement(means[1], means[0], 2e-4)
+            << " with the outline's\n";
+  return 0;
+}

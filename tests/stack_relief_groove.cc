@@ -25,6 +25,10 @@
 //    it).
 // 3. The grooved hub drawn in gmsh (a .geo with a point at each seat's
 //    end) against its outline: the means within 2e-4.
+// 4. A groove shallower than the radial interference (its bottom would
+//    touch; the shaft under it can rise at most by the interference and
+//    the hub's bore only widens, so a deeper one stays open): exit 1, one
+//    line naming the joint's Fit.
 
 #include "run_executable.h"
 #include "run_summary.h"
@@ -221,5 +225,18 @@ main()
     }
   std::cout << "  mean from the file: " << agreement(means[1], means[0], 2e-4)
             << " with the outline's\n";
+
+  std::cout << "\n4. Bad input\n";
+  // A groove 0.01 mm deep against 0.025 mm of radial interference.
+  std::ofstream("shallow.prm")
+    << groove_prm("-25, 50; -10, 50; -10, 50.02; 0, 50.02; 0, 50; 25, 50; "
+                  "25, 100; -25, 100; -25, 50");
+  std::filesystem::remove_all("refused");
+  const RunResult r = run_coaxfit("refused", quiet + "shallow.prm");
+  std::cout << "a groove shallower than the interference: exit " << r.exit_code
+            << ", "
+            << (std::filesystem::exists("refused") ? "written" :
+                                                     "nothing written")
+            << "\n  " << gist(r.message, 70) << " (" << r.lines << " line)\n";
   return 0;
 }

@@ -13,6 +13,33 @@
 
 namespace coaxfit
 {
+  namespace
+  {
+    /**
+     * The radii (mm) at which the boundary of @p outline crosses the plane
+     * z = @p z (arcs as 32 chords).
+     */
+    std::vector<double>
+    radii_at(const SectionOutline &outline, const double z)
+    {
+      std::vector<double> r;
+      for (const OutlineEdge &e : outline.edges())
+        {
+          const unsigned int parts = e.is_arc() ? 32 : 1;
+          for (unsigned int i = 0; i < parts; ++i)
+            {
+              const Point<2> a = e.point_at(double(i) / parts),
+                             b = e.point_at(double(i + 1) / parts);
+              if ((a[1] - z) * (b[1] - z) < 0.)
+                r.push_back(a[0] + (z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
+            }
+        }
+      return r;
+    }
+  } // namespace
+
+
+
   StackSections::StackSections(const std::vector<std::string> &entries,
                                const std::vector<std::string> &texts)
   {
@@ -117,6 +144,22 @@ namespace coaxfit
             z_hi[k] = std::max(z_hi[k], hi);
           }
         std::sort(drawn_pieces[k].begin(), drawn_pieces[k].end());
+        // The clearance across each groove at its middle: the outer
+        // section's bore there less the inner section's outside.
+        grooves.emplace_back();
+        for (unsigned int i = 0; i + 1 < drawn_pieces[k].size(); ++i)
+          {
+            const double a = drawn_pieces[k][i].second,
+                         b = drawn_pieces[k][i + 1].first, z = 0.5 * (a + b);
+            double bore = std::numeric_limits<double>::infinity(), outside = 0.;
+            for (const double r : radii_at(*drawn[k + 1], z))
+              if (r >= radius[k] - tol)
+                bore = std::min(bore, r);
+            for (const double r : radii_at(*drawn[k], z))
+              if (r <= radius[k] + tol)
+                outside = std::max(outside, r);
+            grooves[k].push_back({a, b, bore - outside});
+          }
         shoulders.push_back(
           shoulder_beside(faces, z_lo[k], z_hi[k], tol, both));
         half_length.push_back(0.5 * (z_hi[k] - z_lo[k]));

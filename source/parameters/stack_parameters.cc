@@ -1634,6 +1634,20 @@ namespace coaxfit
                            "interference)");
       }
 
+    // A relief groove shallower than the interference would touch at its
+    // bottom, which is not modelled.
+    for (unsigned int k = 0; k < p.fits.size() && p.sections; ++k)
+      for (const auto &[from, to, clearance] : p.sections->joint_grooves(k))
+        if (clearance <= p.fits[k].largest_interference / 2.)
+          throw InputError(
+            "parameter Fit/" + p.joint_name(k)
+            + ": the joint's relief groove from z = " + number(from, 6) + " to "
+            + number(to, 6) + " leaves " + number(clearance, 6)
+            + " mm between the sections, no more than the largest radial "
+              "interference "
+            + number(p.fits[k].largest_interference / 2., 6)
+            + " mm, so its bottom would touch, which is not modelled; "
+              "allowed: a groove deeper than the radial interference");
     // The case name: the file's base name.
     std::string base = filename.substr(filename.find_last_of('/') + 1);
     if (base.size() > 4 && base.substr(base.size() - 4) == ".prm")

@@ -8,6 +8,7 @@
 #include <coaxfit/fe/section_outline.h>
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -115,6 +116,18 @@ namespace coaxfit
     joint_pieces(unsigned int k) const
     {
       return pieces[k];
+    }
+
+    /**
+     * The grooves between the pieces of joint @p k: each one's drawing z
+     * from and to and the radial clearance between the two sections at
+     * its middle (mm); empty for one piece. A groove shallower than the
+     * joint's radial interference would touch at its bottom.
+     */
+    const std::vector<std::array<double, 3>> &
+    joint_grooves(unsigned int k) const
+    {
+      return grooves[k];
     }
 
     /** The pieces of joint @p k in the drawing's z (mm), ascending. */
@@ -235,6 +248,7 @@ namespace coaxfit
     std::vector<double>                          start; ///< joints' model z
     /** Per joint: its pieces, (lo, hi) in the drawing's and the model's z. */
     std::vector<std::vector<std::pair<double, double>>> drawn_pieces, pieces;
+    std::vector<std::vector<std::array<double, 3>>>     grooves; ///< per joint
     /** Per body: the mesh of its gmsh file, unrefined; null: an outline. */
     std::vector<std::shared_ptr<const Triangulation<2>>> files;
     std::vector<std::string> file_paths; ///< per body, as given (resolved)

@@ -774,7 +774,7 @@ namespace coaxfit
                 force += state.force[k][i];
                 weight += joint.weights[i];
               }
-          f.pieces.push_back({lo, hi, force / weight});
+          f.pieces.push_back({{lo, hi, force / weight}});
         }
     // The gap of each point from the bodies' own displacements (the loads'
     // answers included).
@@ -827,12 +827,18 @@ namespace coaxfit
     // through the middle of the body's bore joint (the innermost body's:
     // its outer joint); of a joint of several pieces, through the middle
     // of its main seat (StackJoint::middle_z()); on each radius its
-    // nearest nodes.
-    const StackJoint        &own   = stack_joints[b > 0 ? b - 1 : 0];
-    const double             z_mid = own.middle_z();
-    std::vector<StressState> result;
-    for (const std::vector<StressState> &states : along)
+    // nearest nodes. A section's surface that does not run through that
+    // plane (a groove there, or its corner on it) has no mid-plane value.
+    const StackJoint         &own   = stack_joints[b > 0 ? b - 1 : 0];
+    const double              z_mid = own.middle_z();
+    const std::vector<double> radii = check_radii(b);
+    std::vector<StressState>  result;
+    for (unsigned int i = 0; i < along.size(); ++i)
       {
+        const std::vector<StressState> &states = along[i];
+        if (parameters.sections
+            && !parameters.sections->surface_through(b, radii[i], z_mid))
+          continue;
         double nearest = std::numeric_limits<double>::infinity();
         for (const StressState &s : states)
           nearest = std::min(nearest, std::abs(s.z - z_mid));
@@ -995,8 +1001,11 @@ namespace coaxfit
                              }))
         if (s.von_mises() >= f.von_mises_max)
           {
-            f.von_mises_max   = s.von_mises();
-            f.von_mises_max_z = s.z + parameters.sections->drawing_offset();
+            f.von_mises_max = s.von_mises();
+            // Drawing z, a vertex's round-off (1e-10 of a gmsh mesh) gone.
+            const double z = s.z + parameters.sections->drawing_offset();
+            f.von_mises_max_z
+              = std::abs(z) < 1e-9 * parameters.sections->extent() ? 0. : z;
             f.von_mises_max_d = 2. * s.r;
           }
     f.brittle          = parameters.materials[b].kind == MaterialKind::brittle;

@@ -214,7 +214,11 @@ namespace coaxfit
             md << (&from == &f.pieces[0][0] ? " z " : "; z ")
                << design_figure(from) << " to " << design_figure(to)
                << ", mean " << design_figure(mean) << " MPa";
-          md << ". Its p(0) and the bodies' mid-plane figures are taken at z "
+          // The bodies whose mid-plane is this joint's: the outer one (its
+          // bore joint), and the innermost for the first joint.
+          md << ". Its p(0) and the mid-plane figures of "
+             << (k == 0 ? p.bodies[0] + " and " : std::string())
+             << p.bodies[k + 1] << " are taken at z "
              << design_figure(f.mid_plane_z) << ".\n";
         }
     bool friction = false;

@@ -158,7 +158,7 @@ namespace coaxfit
             for (const double r : radii_at(*drawn[k], z))
               if (r <= radius[k] + tol)
                 outside = std::max(outside, r);
-            grooves[k].push_back({a, b, bore - outside});
+            grooves[k].push_back({{a, b, bore - outside}});
           }
         shoulders.push_back(
           shoulder_beside(faces, z_lo[k], z_hi[k], tol, both));
@@ -423,6 +423,28 @@ namespace coaxfit
   {
     const auto [lo, hi] = axial_range(*drawn[b]);
     return hi - lo;
+  }
+
+
+
+  bool
+  StackSections::surface_through(const unsigned int b,
+                                 const double       r,
+                                 const double       z) const
+  {
+    const double tol = 1e-9 * extent();
+    for (const OutlineEdge &e : half[b]->edges())
+      if (!e.is_arc() && std::abs(e.start[0] - r) <= tol
+          && std::abs(e.end[0] - r) <= tol)
+        {
+          const double lo       = std::min(e.start[1], e.end[1]),
+                       hi       = std::max(e.start[1], e.end[1]);
+          const bool from_plane = half_model_ && std::abs(lo) <= tol;
+          if ((z > lo + tol || (from_plane && std::abs(z) <= tol))
+              && z < hi - tol)
+            return true;
+        }
+    return false;
   }
 
 

@@ -505,7 +505,8 @@ namespace coaxfit
               "mm; relative to this file), whose mesh is used as it is and "
               "whose neighbours are meshed with its nodes on their joints. "
               "Its joints with its neighbours are found where the sections "
-              "meet, each one cylinder. A stack symmetric about one plane "
+              "meet, each a cylinder (one piece, or several of one diameter "
+              "beside relief grooves). A stack symmetric about one plane "
               "through the middle of every joint is modelled as its half, "
               "any other (and one with a file) whole. Empty: the plain "
               "ring.",

@@ -108,11 +108,12 @@ namespace coaxfit
         return (!whole && piece.first == 0. ? 2. : 1.)
                * (piece.second - piece.first);
       };
-      const auto longest = std::max_element(pieces.begin(),
-                                            pieces.end(),
-                                            [&](const auto &a, const auto &b) {
-                                              return full(a) < full(b);
-                                            });
+      // Of pieces equally long the last (largest z), as a half model has
+      // it.
+      auto longest = pieces.begin();
+      for (auto piece = pieces.begin(); piece != pieces.end(); ++piece)
+        if (full(*piece) >= (1. - 1e-9) * full(*longest))
+          longest = piece;
       return longest->first == 0. && !whole ?
                0. :
                0.5 * (longest->first + longest->second);

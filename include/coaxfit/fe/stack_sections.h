@@ -130,6 +130,24 @@ namespace coaxfit
       return grooves[k];
     }
 
+    /** The largest extent of the sections (mm). */
+    double
+    extent() const
+    {
+      double e = 0.;
+      for (const auto &outline : drawn)
+        e = std::max(e, outline->extent());
+      return e;
+    }
+
+    /**
+     * Whether body @p b's modelled section has a straight surface r = @p r
+     * that runs on both sides of model z @p z (not a corner there; in a
+     * half model a surface from the plane runs on through its mirror).
+     */
+    bool
+    surface_through(unsigned int b, double r, double z) const;
+
     /** The pieces of joint @p k in the drawing's z (mm), ascending. */
     const std::vector<std::pair<double, double>> &
     joint_drawn_pieces(unsigned int k) const
@@ -280,16 +298,6 @@ namespace coaxfit
      */
     void
     tag_file_mesh(Triangulation<2> &mesh, unsigned int b) const;
-
-    /** The largest extent of the sections (mm). */
-    double
-    extent() const
-    {
-      double e = 0.;
-      for (const auto &outline : drawn)
-        e = std::max(e, outline->extent());
-      return e;
-    }
 
     /** Whether model z @p z lies on a piece of joint @p k (within @p tol). */
     bool

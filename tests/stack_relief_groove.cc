@@ -27,7 +27,8 @@
 //    end) against its outline: the means within 2e-4.
 // 4. A groove in the hub's outside under a rim, its corner on the hub's
 //    mid-plane: the hub's von Mises there from refinement 1 to 2 within
-//    2e-3 (the corner's value, taken before, grew by 17 %).
+//    2e-3 (the corner's value, taken before, grew by 17 %). A seat of
+//    1 mm beside one of 20 mm gives a caution (its mean is its ends').
 // 5. A groove shallower than the radial interference (its bottom would
 //    touch; the shaft under it can rise at most by the interference and
 //    the hub's bore only widens, so a deeper one stays open): exit 1, one
@@ -254,6 +255,18 @@ main()
   std::cout << "  Hub's von Mises at its mid-plane: refinement 2 "
             << agreement(von_mises[1], von_mises[0], 2e-3)
             << " with refinement 1\n";
+
+  // A seat 1 mm long beside one of 20 mm: a caution.
+  {
+    std::ofstream("short.prm")
+      << groove_prm("-25, 50; -24, 50; -24, 54; 5, 54; 5, 50; 25, 50; 25, "
+                    "100; -25, 100; -25, 50");
+    std::filesystem::remove_all("short");
+    const RunResult      r = run_coaxfit("short", quiet + "short.prm");
+    const nlohmann::json s = read_summary("short");
+    std::cout << "a seat 1 mm long beside one of 20 mm: exit " << r.exit_code
+              << ", caution: " << s["warnings"][0].get<std::string>() << '\n';
+  }
 
   std::cout << "\n5. Bad input\n";
   // A groove 0.01 mm deep against 0.025 mm of radial interference.

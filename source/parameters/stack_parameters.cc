@@ -1069,6 +1069,24 @@ namespace coaxfit
                            + m.temperature_limit_reason
                            + ": its strength figures do not hold there");
       }
+    // A piece of a joint much shorter than its others: its mean is its
+    // ends' peaks, no seat's.
+    for (unsigned int k = 0; sections && k < n_joints(); ++k)
+      {
+        const auto &pieces = sections->joint_drawn_pieces(k);
+        double      l      = 0.;
+        for (const auto &[lo, hi] : pieces)
+          l += hi - lo;
+        for (const auto &[lo, hi] : pieces)
+          if (pieces.size() > 1 && hi - lo < 0.05 * l)
+            list.push_back("joint " + joint_name(k)
+                           + " bears on a piece from z " + number(lo, 6)
+                           + " to " + number(hi, 6) + " only "
+                           + number(hi - lo, 3) + " mm long, under 5 % of its "
+                           + number(l, 6)
+                           + " mm: its mean pressure is that of its ends' "
+                             "peaks, not a seat's");
+      }
     return list;
   }
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <coaxfit/coupling/monolithic_solver.h>
+#include <coaxfit/coupling/tied_pattern.h>
 
 #include <algorithm>
 #include <array>
@@ -63,26 +64,9 @@ namespace coaxfit
     const unsigned int              n1 = K1.m(), n = K1.m() + K2.m();
     const AffineConstraints<double> all_tied = tie_constraints(
       std::vector<bool>(shaft.get_interface_dofs().size(), true));
-    // A DoF and the DoFs its tie line names (one on matching sides, the
-    // row of M on non-matching ones).
-    const auto images = [&](const unsigned int i) {
-      std::vector<unsigned int> result{i};
-      if (const auto *line = all_tied.get_constraint_entries(i))
-        for (const auto &entry : *line)
-          result.push_back(entry.first);
-      return result;
-    };
     DynamicSparsityPattern dsp(n, n);
-    for (unsigned int body = 0; body < 2; ++body)
-      {
-        const SparseMatrix<double> &K      = body == 0 ? K1 : K2;
-        const unsigned int          offset = body == 0 ? 0 : n1;
-        for (unsigned int row = 0; row < K.m(); ++row)
-          for (auto e = K.begin(row); e != K.end(row); ++e)
-            for (const unsigned int r : images(offset + row))
-              for (const unsigned int c : images(offset + e->column()))
-                dsp.add(r, c);
-      }
+    add_tied_pattern(dsp, K1, 0, all_tied);
+    add_tied_pattern(dsp, K2, n1, all_tied);
     pattern.copy_from(dsp);
     cholesky.analyze(SparseMatrix<double>(pattern));
   }

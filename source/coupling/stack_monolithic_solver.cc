@@ -2,6 +2,7 @@
 
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/coupling/stack_monolithic_solver.h>
+#include <coaxfit/coupling/tied_pattern.h>
 
 #include <algorithm>
 #include <cmath>
@@ -74,24 +75,12 @@ namespace coaxfit
     for (const StackJoint &joint : joints)
       all.emplace_back(joint.n_points(), true);
     const AffineConstraints<double> all_tied = tie_constraints(all);
-    const auto                      images   = [&](const unsigned int i) {
-      std::vector<unsigned int> result{i};
-      if (const auto *line = all_tied.get_constraint_entries(i))
-        for (const auto &entry : *line)
-          result.push_back(entry.first);
-      return result;
-    };
-    DynamicSparsityPattern dsp(offset.back(), offset.back());
+    DynamicSparsityPattern          dsp(offset.back(), offset.back());
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        const SparseMatrix<double> &K
-          = bodies[b]->stiffness_in_interface_frame(rotated[b]);
-        for (unsigned int row = 0; row < K.m(); ++row)
-          for (auto e = K.begin(row); e != K.end(row); ++e)
-            for (const unsigned int r : images(offset[b] + row))
-              for (const unsigned int c : images(offset[b] + e->column()))
-                dsp.add(r, c);
-      }
+      add_tied_pattern(dsp,
+                       bodies[b]->stiffness_in_interface_frame(rotated[b]),
+                       offset[b],
+                       all_tied);
     pattern.copy_from(dsp);
     cholesky.analyze(SparseMatrix<double>(pattern));
   }

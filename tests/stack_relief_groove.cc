@@ -29,6 +29,8 @@
 //    mid-plane: the hub's von Mises there from refinement 1 to 2 within
 //    2e-3 (the corner's value, taken before, grew by 17 %). A seat of
 //    1 mm beside one of 20 mm gives a caution (its mean is its ends').
+//    prm/examples/two_seats.prm's contact line for ParaView is a polyline
+//    per seat.
 // 5. A groove shallower than the radial interference (its bottom would
 //    touch; the shaft under it can rise at most by the interference and
 //    the hub's bore only widens, so a deeper one stays open): exit 1, one
@@ -266,6 +268,25 @@ main()
     const nlohmann::json s = read_summary("short");
     std::cout << "a seat 1 mm long beside one of 20 mm: exit " << r.exit_code
               << ", caution: " << s["warnings"][0].get<std::string>() << '\n';
+  }
+
+  // The joint's contact line in ParaView: a polyline per seat, none
+  // across the groove.
+  {
+    std::filesystem::remove_all("seats");
+    const RunResult    r = run_coaxfit("seats",
+                                    "--set \"Output/Write plots=false\" "
+                                      + std::string(COAXFIT_SOURCE_DIR)
+                                      + "/prm/examples/two_seats.prm");
+    std::ifstream      in("seats/interface_Shaft-Hub.vtp");
+    std::ostringstream vtp;
+    vtp << in.rdbuf();
+    std::cout << "two_seats.prm: exit " << r.exit_code
+              << ", interface_Shaft-Hub.vtp has "
+              << (vtp.str().find("NumberOfLines=\"2\"") != std::string::npos ?
+                    "a line per seat" :
+                    "NOT a line per seat")
+              << '\n';
   }
 
   std::cout << "\n5. Bad input\n";

@@ -41,6 +41,9 @@ namespace coaxfit
     for (unsigned int i = 0; i < n; ++i)
       {
         vtp.points.push_back({{parameters.joint_diameter(k) / 2., joint.z[i]}});
+        // A new line after a relief groove.
+        if (i > 0 && !joint.bearing(i - 1))
+          vtp.line_starts.push_back(i);
         // The radial gap u_outer - u_inner - d (round-off where in
         // contact).
         gap[i]    = vtp.vectors[0].values[i][0] - vtp.vectors[1].values[i][0];

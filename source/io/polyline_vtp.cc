@@ -12,7 +12,8 @@ namespace coaxfit
         << "<VTKFile type=\"PolyData\" version=\"0.1\" "
            "byte_order=\"LittleEndian\">\n<PolyData>\n"
         << "<Piece NumberOfPoints=\"" << n
-        << "\" NumberOfVerts=\"0\" NumberOfLines=\"1\" "
+        << "\" NumberOfVerts=\"0\" NumberOfLines=\"" << line_starts.size() + 1
+        << "\" "
            "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
         << "<PointData Scalars=\""
         << (scalars.empty() ? std::string() : scalars[0].name)
@@ -45,7 +46,9 @@ namespace coaxfit
     for (std::size_t i = 0; i < n; ++i)
       out << i << (i + 1 < n ? ' ' : '\n');
     out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
-           "format=\"ascii\">\n"
-        << n << "\n</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+           "format=\"ascii\">\n";
+    for (const std::size_t start : line_starts)
+      out << start << ' ';
+    out << n << "\n</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
   }
 } // namespace coaxfit

@@ -33,6 +33,12 @@ namespace coaxfit
 
     /** The points (r, z) in mm, in the polyline's order. */
     std::vector<std::array<double, 2>> points;
+    /**
+     * The first point of each polyline after the first (a joint of several
+     * pieces: one line per piece, none across a relief groove); empty: one
+     * line through all points.
+     */
+    std::vector<std::size_t> line_starts;
     /** Vector arrays; the first is the one ParaView warps by. */
     std::vector<VectorArray> vectors;
     /** Scalar arrays; the first is the active one. */

@@ -175,8 +175,8 @@ main()
   nlohmann::json outline, file;
   for (const std::string name : {"gear_wheel_with_web", "gear_wheel_from_file"})
     {
-      // The file's run (Gauss-Seidel) also checked against the monolithic
-      // solution below: to 1e-10.
+      // The file's run (Gauss-Seidel, to Coupling/Tolerance 1e-10) is also
+      // checked against the monolithic solution below (1e-8).
       std::filesystem::remove_all(name);
       const RunResult r                                 = run_coaxfit(name,
                                       quiet + "--set Coupling/Tolerance=1e-10 "

@@ -290,16 +290,46 @@ main()
   }
 
   std::cout << "\n5. Bad input\n";
-  // A groove 0.01 mm deep against 0.025 mm of radial interference.
-  std::ofstream("shallow.prm")
-    << groove_prm("-25, 50; -10, 50; -10, 50.02; 0, 50.02; 0, 50; 25, 50; "
-                  "25, 100; -25, 100; -25, 50");
-  std::filesystem::remove_all("refused");
-  const RunResult r = run_coaxfit("refused", quiet + "shallow.prm");
-  std::cout << "a groove shallower than the interference: exit " << r.exit_code
-            << ", "
-            << (std::filesystem::exists("refused") ? "written" :
-                                                     "nothing written")
-            << "\n  " << gist(r.message, 70) << " (" << r.lines << " line)\n";
+  // A groove 0.01 mm deep against 0.025 mm of radial interference; the
+  // same with a point on its bottom at its middle (once missed); a V
+  // groove 0.02 mm deep; a hub whose bore is loose and that touches the
+  // shaft only on a shoulder's face.
+  const std::vector<std::pair<std::string, std::string>> bad
+    = {{"a groove shallower than the interference",
+        "-25, 50; -10, 50; -10, 50.02; 0, 50.02; 0, 50; 25, 50; 25, 100; -25, "
+        "100; -25, 50"},
+       {"the same with a point at its middle",
+        "-25, 50; -10, 50; -10, 50.02; -5, 50.02; 0, 50.02; 0, 50; 25, 50; 25, "
+        "100; -25, 100; -25, 50"},
+       {"a V groove 0.02 mm deep",
+        "-25, 50; -10, 50; -5, 50.02; 0, 50; 25, 50; 25, 100; -25, 100; -25, "
+        "50"}};
+  for (const auto &[what, hub] : bad)
+    {
+      std::ofstream("bad.prm") << groove_prm(hub);
+      std::filesystem::remove_all("refused");
+      const RunResult r = run_coaxfit("refused", quiet + "bad.prm");
+      std::cout << what << ": exit " << r.exit_code << ", "
+                << (std::filesystem::exists("refused") ? "written" :
+                                                         "nothing written")
+                << "\n  " << gist(r.message, 70) << " (" << r.lines
+                << " line)\n";
+    }
+  {
+    std::string prm = groove_prm("-40, 52; 40, 52; 40, 120; -40, 120; -40, 52");
+    const std::string shaft = "  subsection Shaft\n    set Inner diameter = 0\n"
+                              "    set Outer diameter = 50\n"
+                              "    set Length = 80\n  end\n";
+    prm.replace(prm.find(shaft),
+                shaft.size(),
+                "  set Shaft section = -60, 0; 60, 0; 60, 50; -40, 50; -40, "
+                "70; -60, 70; -60, 0\n");
+    std::ofstream("face.prm") << prm;
+    std::filesystem::remove_all("refused");
+    const RunResult r = run_coaxfit("refused", quiet + "face.prm");
+    std::cout << "sections that meet only on a face across the axis: exit "
+              << r.exit_code << "\n  " << gist(r.message, 70) << " (" << r.lines
+              << " line)\n";
+  }
   return 0;
 }

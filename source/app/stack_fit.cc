@@ -189,8 +189,13 @@ namespace coaxfit
             }
           for (unsigned int b = 0; b < sections.n_bodies(); ++b)
             {
-              const double cells = sections.modelled(b).area() / (16. * h * h)
-                                   * refined * refined;
+              // A gmsh file's own cells, refined alike (and once more if
+              // the outlines' cells are split: counted).
+              const double cells
+                = sections.from_file(b) ?
+                    4. * sections.file_cells(b) * refined * refined :
+                    sections.modelled(b).area() / (16. * h * h) * refined
+                      * refined;
               double n_points = 0.;
               for (const unsigned int k : {b - 1, b})
                 if (k < parameters.n_joints())

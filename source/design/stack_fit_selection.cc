@@ -36,6 +36,22 @@ namespace coaxfit
       s << std::setprecision(digits) << x;
       return s.str();
     }
+
+    /**
+     * Whether the largest diametral interference @p U (mm) of joint @p k
+     * would close one of its relief grooves (its clearance no more than
+     * U / 2), which is not modelled.
+     */
+    bool
+    groove_touches(const StackParameters &p, const unsigned int k, double U)
+    {
+      if (!p.sections)
+        return false;
+      for (const auto &groove : p.sections->joint_grooves(k))
+        if (groove[2] <= U / 2.)
+          return true;
+      return false;
+    }
   } // namespace
 
 
@@ -184,9 +200,25 @@ namespace coaxfit
           fits.push_back(
             iso_fit(parameters.fits[k].iso_fit, parameters.joint_diameter(k)));
         else
-          for (const IsoFit &f : candidate_fits(parameters.joint_diameter(k)))
-            if (1e-3 * f.min_interference() > parameters.fits[k].smoothing_loss)
-              fits.push_back(f);
+          {
+            unsigned int closing = 0;
+            for (const IsoFit &f : candidate_fits(parameters.joint_diameter(k)))
+              if (1e-3 * f.min_interference()
+                  > parameters.fits[k].smoothing_loss)
+                {
+                  if (groove_touches(parameters,
+                                     k,
+                                     1e-3 * f.max_interference()))
+                    ++closing;
+                  else
+                    fits.push_back(f);
+                }
+            if (closing > 0)
+              notes.push_back(
+                std::to_string(closing) + " fits of " + parameters.joint_name(k)
+                + " were left out: their largest interference would close "
+                  "its relief groove, which is not modelled");
+          }
         std::stable_sort(fits.begin(), fits.end(), rank);
         n_fits.push_back(fits.size());
         candidates.push_back(fits);

@@ -30,7 +30,8 @@ namespace coaxfit
             {
               const Point<2> a = e.point_at(double(i) / parts),
                              b = e.point_at(double(i + 1) / parts);
-              if ((a[1] - z) * (b[1] - z) < 0.)
+              // Half open, so that a vertex at z counts once.
+              if ((a[1] <= z && z < b[1]) || (b[1] <= z && z < a[1]))
                 r.push_back(a[0] + (z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
             }
         }
@@ -122,13 +123,32 @@ namespace coaxfit
                                  "at their joint; Assembly/Bodies lists "
                                  "the bodies inside out");
           }
+        if (pieces.empty())
+          throw InputError(
+            both
+            + "the sections meet only on a face across the axis; a "
+              "joint of a stack needs a cylinder the two bodies share "
+              "(drawn at the nominal joint diameter, the interference "
+              "given in Fit)");
         if (!on_one_cylinder())
           throw InputError(
             both + "the sections meet on cylinders of "
             + std::to_string(pieces.size())
             + " pieces with different diameters (D = "
             + number(2. * pieces[0].start[0], 6) + " and "
-            + number(2. * pieces.back().start[0], 6)
+            + number(2.
+                       * std::find_if(pieces.begin(),
+                                      pieces.end(),
+                                      [&](const JointPiece &piece) {
+                                        return std::abs(piece.start[0]
+                                                        - pieces[0].start[0])
+                                                 > tol
+                                               || std::abs(piece.end[0]
+                                                           - pieces[0].start[0])
+                                                    > tol;
+                                      })
+                           ->start[0],
+                     6)
             + "); a joint of a stack is one diameter in this version "
               "(a stepped seat is not modelled); allowed: pieces of one "
               "diameter, such as two seats beside a relief groove");
@@ -144,21 +164,29 @@ namespace coaxfit
             z_hi[k] = std::max(z_hi[k], hi);
           }
         std::sort(drawn_pieces[k].begin(), drawn_pieces[k].end());
-        // The clearance across each groove at its middle: the outer
-        // section's bore there less the inner section's outside.
+        // The least clearance across each groove over its inner four
+        // fifths (its flanks may slope onto the seats): the outer
+        // section's bore less the inner section's outside, at 200 planes.
         grooves.emplace_back();
         for (unsigned int i = 0; i + 1 < drawn_pieces[k].size(); ++i)
           {
-            const double a = drawn_pieces[k][i].second,
-                         b = drawn_pieces[k][i + 1].first, z = 0.5 * (a + b);
-            double bore = std::numeric_limits<double>::infinity(), outside = 0.;
-            for (const double r : radii_at(*drawn[k + 1], z))
-              if (r >= radius[k] - tol)
-                bore = std::min(bore, r);
-            for (const double r : radii_at(*drawn[k], z))
-              if (r <= radius[k] + tol)
-                outside = std::max(outside, r);
-            grooves[k].push_back({{a, b, bore - outside}});
+            const double a   = drawn_pieces[k][i].second,
+                         b   = drawn_pieces[k][i + 1].first;
+            double clearance = std::numeric_limits<double>::infinity();
+            for (unsigned int s = 0; s <= 200; ++s)
+              {
+                const double z    = a + (0.1 + 0.8 * s / 200.) * (b - a);
+                double       bore = std::numeric_limits<double>::infinity(),
+                       outside    = 0.;
+                for (const double r : radii_at(*drawn[k + 1], z))
+                  if (r >= radius[k] - tol)
+                    bore = std::min(bore, r);
+                for (const double r : radii_at(*drawn[k], z))
+                  if (r <= radius[k] + tol)
+                    outside = std::max(outside, r);
+                clearance = std::min(clearance, bore - outside);
+              }
+            grooves[k].push_back({{a, b, clearance}});
           }
         shoulders.push_back(
           shoulder_beside(faces, z_lo[k], z_hi[k], tol, both));
@@ -432,18 +460,32 @@ namespace coaxfit
                                  const double       r,
                                  const double       z) const
   {
-    const double tol = 1e-9 * extent();
+    // The straight stretches at r, neighbours joined (a point drawn on a
+    // straight surface splits it into two edges).
+    const double                           tol = 1e-9 * extent();
+    std::vector<std::pair<double, double>> runs;
     for (const OutlineEdge &e : half[b]->edges())
       if (!e.is_arc() && std::abs(e.start[0] - r) <= tol
           && std::abs(e.end[0] - r) <= tol)
-        {
-          const double lo       = std::min(e.start[1], e.end[1]),
-                       hi       = std::max(e.start[1], e.end[1]);
-          const bool from_plane = half_model_ && std::abs(lo) <= tol;
-          if ((z > lo + tol || (from_plane && std::abs(z) <= tol))
-              && z < hi - tol)
-            return true;
-        }
+        runs.emplace_back(std::min(e.start[1], e.end[1]),
+                          std::max(e.start[1], e.end[1]));
+    std::sort(runs.begin(), runs.end());
+    // Whether the surface from lo to hi runs on both sides of z (in a
+    // half model one from the plane runs on through its mirror).
+    const auto through = [&](const double lo, const double hi) {
+      const bool from_plane = half_model_ && std::abs(lo) <= tol;
+      return (z > lo + tol || (from_plane && std::abs(z) <= tol))
+             && z < hi - tol;
+    };
+    for (unsigned int i = 0; i < runs.size();)
+      {
+        const double lo = runs[i].first;
+        double       hi = runs[i].second;
+        for (++i; i < runs.size() && runs[i].first <= hi + tol; ++i)
+          hi = std::max(hi, runs[i].second);
+        if (through(lo, hi))
+          return true;
+      }
     return false;
   }
 

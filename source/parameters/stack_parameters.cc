@@ -721,7 +721,8 @@ namespace coaxfit
                       "joint get the same vertices on it. 0: the shortest "
                       "joint's l_F / 100. Mesh/Axial cells and Radial cells "
                       "apply to plain rings only. Allowed: 0, or l_F / 1000 "
-                      "to l_F / 4 of the shortest joint.",
+                      "to l_F / 4 of the shortest joint (l_F here from end "
+                      "to end of a joint of several pieces).",
                       Patterns::Double(0.));
     prm.add_parameter("Global refinements",
                       mesh.global_refinements,
@@ -1025,9 +1026,10 @@ namespace coaxfit
                     && mesh.cell_size <= l_min / 4.,
                   "Mesh/Cell size",
                   mesh.cell_size,
-                  "0, or l_F / 1000 = " + number(l_min / 1000., 6)
-                    + " to l_F / 4 = " + number(l_min / 4., 6)
-                    + " mm of the shortest joint");
+                  "0, or l / 1000 = " + number(l_min / 1000., 6)
+                    + " to l / 4 = " + number(l_min / 4., 6)
+                    + " mm of the shortest joint's length l from end to "
+                      "end");
         require(mesh.grading_ratio <= 3.,
                 "Mesh/Grading ratio",
                 mesh.grading_ratio,
@@ -1654,19 +1656,21 @@ namespace coaxfit
       }
 
     // A relief groove shallower than the interference would touch at its
-    // bottom, which is not modelled.
+    // bottom, which is not modelled (a joint whose fit is chosen: the
+    // selection leaves out the fits that would close it).
     for (unsigned int k = 0; k < p.fits.size() && p.sections; ++k)
       for (const auto &[from, to, clearance] : p.sections->joint_grooves(k))
-        if (clearance <= p.fits[k].largest_interference / 2.)
-          throw InputError(
-            "parameter Fit/" + p.joint_name(k)
-            + ": the joint's relief groove from z = " + number(from, 6) + " to "
-            + number(to, 6) + " leaves " + number(clearance, 6)
-            + " mm between the sections, no more than the largest radial "
-              "interference "
-            + number(p.fits[k].largest_interference / 2., 6)
-            + " mm, so its bottom would touch, which is not modelled; "
-              "allowed: a groove deeper than the radial interference");
+        if (!p.selected[k])
+          if (clearance <= p.fits[k].largest_interference / 2.)
+            throw InputError(
+              "parameter Fit/" + p.joint_name(k)
+              + ": the joint's relief groove from z = " + number(from, 6)
+              + " to " + number(to, 6) + " leaves " + number(clearance, 6)
+              + " mm between the sections, no more than the largest radial "
+                "interference "
+              + number(p.fits[k].largest_interference / 2., 6)
+              + " mm, so its bottom would touch, which is not modelled; "
+                "allowed: a groove deeper than the radial interference");
     // The case name: the file's base name.
     std::string base = filename.substr(filename.find_last_of('/') + 1);
     if (base.size() > 4 && base.substr(base.size() - 4) == ".prm")

@@ -120,9 +120,9 @@ namespace coaxfit
 
     /**
      * The grooves between the pieces of joint @p k: each one's drawing z
-     * from and to and the radial clearance between the two sections at
-     * its middle (mm); empty for one piece. A groove shallower than the
-     * joint's radial interference would touch at its bottom.
+     * from and to and the least radial clearance between the two sections
+     * over its inner four fifths (mm); empty for one piece. A groove
+     * shallower than the joint's radial interference would touch.
      */
     const std::vector<std::array<double, 3>> &
     joint_grooves(unsigned int k) const
@@ -233,6 +233,13 @@ namespace coaxfit
     equivalent_inner_diameter(unsigned int b) const;
     double
     equivalent_outer_diameter(unsigned int b) const;
+
+    /** The cells of body @p b's gmsh file, unrefined; 0 for an outline. */
+    unsigned int
+    file_cells(const unsigned int b) const
+    {
+      return files[b] ? files[b]->n_active_cells() : 0;
+    }
 
     /** Whether body @p b's section is a gmsh file (its mesh kept). */
     bool

@@ -335,38 +335,25 @@ namespace
   }
 
   /**
-   * Run the cases of two bodies @p batch (at most @p jobs at a time); the
-   * table printed and written to @p table; the batch's exit code.
+   * Run the cases @p batch by a @p Batch (CaseBatch for files of two
+   * bodies, StackBatch for stacks: a row per joint) at most @p jobs at a
+   * time, called @p what in the heading; the table printed and written to
+   * @p table; the batch's exit code.
    */
+  template <typename Batch, typename Case>
   int
-  run_batch(const CommandLine                       &line,
-            const unsigned int                       jobs,
-            const PreparedBatch<coaxfit::BatchCase> &batch,
-            const std::string                       &table)
+  run_batch(const CommandLine         &line,
+            const unsigned int         jobs,
+            const PreparedBatch<Case> &batch,
+            const std::string         &table,
+            const std::string         &what)
   {
-    using namespace coaxfit;
-    const std::vector<CaseOutcome> outcomes
-      = CaseBatch(jobs, !line.quiet, std::cout, std::cerr).run(batch.cases);
-    std::cout << "\ncoaxfit: " << batch.cases.size() << " cases\n";
-    CaseBatch::print_table(std::cout, batch.cases, outcomes);
-    write_table(table, CaseBatch::table_csv(batch.cases, outcomes));
-    return CaseBatch::exit_code(outcomes);
-  }
-
-  /** The same for stack cases (StackBatch, a row per joint). */
-  int
-  run_batch(const CommandLine                       &line,
-            const unsigned int                       jobs,
-            const PreparedBatch<coaxfit::StackCase> &batch,
-            const std::string                       &table)
-  {
-    using namespace coaxfit;
-    const std::vector<StackCaseOutcome> outcomes
-      = StackBatch(jobs, !line.quiet, std::cout, std::cerr).run(batch.cases);
-    std::cout << "\ncoaxfit: " << batch.cases.size() << " stack cases\n";
-    StackBatch::print_table(std::cout, batch.cases, outcomes);
-    write_table(table, StackBatch::table_csv(batch.cases, outcomes));
-    return StackBatch::exit_code(outcomes);
+    const auto outcomes
+      = Batch(jobs, !line.quiet, std::cout, std::cerr).run(batch.cases);
+    std::cout << "\ncoaxfit: " << batch.cases.size() << ' ' << what << '\n';
+    Batch::print_table(std::cout, batch.cases, outcomes);
+    write_table(table, Batch::table_csv(batch.cases, outcomes));
+    return Batch::exit_code(outcomes);
   }
 
   /**
@@ -377,10 +364,13 @@ namespace
   run_files(const CommandLine &line, const unsigned int jobs)
   {
     const auto batch = prepare_files(line);
-    return run_batch(line,
-                     jobs,
-                     batch,
-                     batch_table(line, batch.targets, batch.inputs));
+    return run_batch<coaxfit::CaseBatch>(line,
+                                         jobs,
+                                         batch,
+                                         batch_table(line,
+                                                     batch.targets,
+                                                     batch.inputs),
+                                         "cases");
   }
 
   /**
@@ -392,10 +382,13 @@ namespace
   run_stack_files(const CommandLine &line, const unsigned int jobs)
   {
     const auto batch = prepare_stack_files(line);
-    return run_batch(line,
-                     jobs,
-                     batch,
-                     batch_table(line, batch.targets, batch.inputs));
+    return run_batch<coaxfit::StackBatch>(line,
+                                          jobs,
+                                          batch,
+                                          batch_table(line,
+                                                      batch.targets,
+                                                      batch.inputs),
+                                          "stack cases");
   }
 
   /**
@@ -431,8 +424,10 @@ namespace
               .string();
         check_table(stack_table, inputs, targets);
       }
-    const int a = run_batch(line, jobs, two_body, table);
-    const int b = run_batch(line, jobs, stack, stack_table);
+    const int a
+      = run_batch<coaxfit::CaseBatch>(line, jobs, two_body, table, "cases");
+    const int b = run_batch<coaxfit::StackBatch>(
+      line, jobs, stack, stack_table, "stack cases");
     return std::max(a, b);
   }
 

@@ -1543,11 +1543,7 @@ namespace coaxfit
             out << (&from == &f.pieces[0][0] ? " z " : ", z ") << from << " to "
                 << to << " mean " << mean << " MPa";
           out << "; p(0) at z " << f.mid_plane_z
-              << (std::abs(joint.middle_z()
-                           - (joint.whole ?
-                                0.5 * (joint.z.front() + joint.z.back()) :
-                                0.))
-                      > 0. ?
+              << (joint.middle_z() != joint.centre() ?
                     ", the middle of its longest piece (the joint's middle "
                     "is not inside one)" :
                     ", the joint's middle")

@@ -36,22 +36,6 @@ namespace coaxfit
       s << std::setprecision(digits) << x;
       return s.str();
     }
-
-    /**
-     * Whether the largest diametral interference @p U (mm) of joint @p k
-     * would close one of its relief grooves (its clearance no more than
-     * U / 2), which is not modelled.
-     */
-    bool
-    groove_touches(const StackParameters &p, const unsigned int k, double U)
-    {
-      if (!p.sections)
-        return false;
-      for (const auto &groove : p.sections->joint_grooves(k))
-        if (groove[2] <= U / 2.)
-          return true;
-      return false;
-    }
   } // namespace
 
 
@@ -206,9 +190,9 @@ namespace coaxfit
               if (1e-3 * f.min_interference()
                   > parameters.fits[k].smoothing_loss)
                 {
-                  if (groove_touches(parameters,
-                                     k,
-                                     1e-3 * f.max_interference()))
+                  if (parameters.sections
+                      && parameters.sections->closing_groove(
+                        k, 1e-3 * f.max_interference()))
                     ++closing;
                   else
                     fits.push_back(f);

@@ -209,23 +209,40 @@ namespace coaxfit
 
 
 
+  std::vector<double>
+  radii_at(const SectionOutline &outline, const double z)
+  {
+    std::vector<double> r;
+    for (const OutlineEdge &e : outline.edges())
+      {
+        const unsigned int parts = e.is_arc() ? 32 : 1;
+        for (unsigned int i = 0; i < parts; ++i)
+          {
+            const Point<2> a = e.point_at(double(i) / parts),
+                           b = e.point_at(double(i + 1) / parts);
+            if ((a[1] <= z && z < b[1]) || (b[1] <= z && z < a[1]))
+              r.push_back(a[0] + (z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
+          }
+      }
+    return r;
+  }
+
+
+
   double
   mean_outer_diameter(const SectionOutline &hub,
                       const double          z_start,
                       const double          z_end)
   {
-    // The boundary as straight pieces (arcs as chords) and the z where the
-    // largest radius may change its edge: every end of a piece.
-    std::vector<std::pair<Point<2>, Point<2>>> pieces;
-    std::vector<double>                        breaks{z_start, z_end};
+    // The z where the largest radius may change its edge: every end of a
+    // straight piece (arcs as the chords radii_at() takes).
+    std::vector<double> breaks{z_start, z_end};
     for (const OutlineEdge &e : hub.edges())
       {
         const unsigned int parts = e.is_arc() ? 32 : 1;
         for (unsigned int k = 0; k < parts; ++k)
           {
-            pieces.emplace_back(e.point_at(double(k) / parts),
-                                e.point_at(double(k + 1) / parts));
-            const double z = pieces.back().first[1];
+            const double z = e.point_at(double(k) / parts)[1];
             if (z > z_start && z < z_end)
               breaks.push_back(z);
           }
@@ -236,12 +253,10 @@ namespace coaxfit
     double integral = 0.;
     for (unsigned int i = 0; i + 1 < breaks.size(); ++i)
       {
-        const double z = 0.5 * (breaks[i] + breaks[i + 1]);
-        double       r = 0.;
-        for (const auto &[a, b] : pieces)
-          if ((a[1] - z) * (b[1] - z) < 0.)
-            r = std::max(r, a[0] + (z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
-        integral += r * (breaks[i + 1] - breaks[i]);
+        const std::vector<double> r
+          = radii_at(hub, 0.5 * (breaks[i] + breaks[i + 1]));
+        integral += (r.empty() ? 0. : *std::max_element(r.begin(), r.end()))
+                    * (breaks[i + 1] - breaks[i]);
       }
     return 2. * integral / (z_end - z_start);
   }

@@ -13,34 +13,6 @@
 
 namespace coaxfit
 {
-  namespace
-  {
-    /**
-     * The radii (mm) at which the boundary of @p outline crosses the plane
-     * z = @p z (arcs as 32 chords).
-     */
-    std::vector<double>
-    radii_at(const SectionOutline &outline, const double z)
-    {
-      std::vector<double> r;
-      for (const OutlineEdge &e : outline.edges())
-        {
-          const unsigned int parts = e.is_arc() ? 32 : 1;
-          for (unsigned int i = 0; i < parts; ++i)
-            {
-              const Point<2> a = e.point_at(double(i) / parts),
-                             b = e.point_at(double(i + 1) / parts);
-              // Half open, so that a vertex at z counts once.
-              if ((a[1] <= z && z < b[1]) || (b[1] <= z && z < a[1]))
-                r.push_back(a[0] + (z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
-            }
-        }
-      return r;
-    }
-  } // namespace
-
-
-
   StackSections::StackSections(const std::vector<std::string> &entries,
                                const std::vector<std::string> &texts)
   {
@@ -62,10 +34,7 @@ namespace coaxfit
       else
         drawn.push_back(std::make_unique<SectionOutline>(
           SectionOutline::parse(texts[b], entries[b])));
-    double extent = 0.;
-    for (const auto &outline : drawn)
-      extent = std::max(extent, outline->extent());
-    const double tol = 1e-6 * extent;
+    const double tol = 1e-6 * extent();
 
     // Each body meets the next one out on a cylinder: one piece, or
     // several of one diameter (a relief groove between two seats).
@@ -80,12 +49,14 @@ namespace coaxfit
         // A face across the axis beside the joint (a wheel against a
         // shaft's shoulder) is set aside: it carries no force (below).
         std::vector<JointPiece> faces = faces_across_axis(pieces, tol);
-        const auto              on_one_cylinder = [&]() {
-          for (const JointPiece &piece : pieces)
-            if (std::abs(piece.start[0] - pieces[0].start[0]) > tol
-                || std::abs(piece.end[0] - pieces[0].start[0]) > tol)
-              return false;
-          return !pieces.empty();
+        // A piece off the first one's cylinder (a stepped seat).
+        const auto off_cylinder = [&](const JointPiece &piece) {
+          return std::abs(piece.start[0] - pieces[0].start[0]) > tol
+                 || std::abs(piece.end[0] - pieces[0].start[0]) > tol;
+        };
+        const auto on_one_cylinder = [&]() {
+          return !pieces.empty()
+                 && std::none_of(pieces.begin(), pieces.end(), off_cylinder);
         };
         // Sections that meet within the drawing tolerance: corners on the
         // joint's cylinder moved onto it exactly, so that both meshes have
@@ -136,19 +107,11 @@ namespace coaxfit
             + std::to_string(pieces.size())
             + " pieces with different diameters (D = "
             + number(2. * pieces[0].start[0], 6) + " and "
-            + number(2.
-                       * std::find_if(pieces.begin(),
-                                      pieces.end(),
-                                      [&](const JointPiece &piece) {
-                                        return std::abs(piece.start[0]
-                                                        - pieces[0].start[0])
-                                                 > tol
-                                               || std::abs(piece.end[0]
-                                                           - pieces[0].start[0])
-                                                    > tol;
-                                      })
-                           ->start[0],
-                     6)
+            + number(
+              2.
+                * std::find_if(pieces.begin(), pieces.end(), off_cylinder)
+                    ->start[0],
+              6)
             + "); a joint of a stack is one diameter in this version "
               "(a stepped seat is not modelled); allowed: pieces of one "
               "diameter, such as two seats beside a relief groove");
@@ -290,8 +253,8 @@ namespace coaxfit
               {
                 bool same = z.size() == file_joint_z[k].size();
                 for (unsigned int i = 0; same && i < z.size(); ++i)
-                  same = std::abs(z[i] - file_joint_z[k][i])
-                         <= 1e-10 * this->extent();
+                  same
+                    = std::abs(z[i] - file_joint_z[k][i]) <= 1e-10 * extent();
                 if (!same)
                   throw InputError(
                     "parameters " + entries[k] + " and " + entries[k + 1]
@@ -371,10 +334,7 @@ namespace coaxfit
   StackSections::tag_file_mesh(Triangulation<2>  &mesh,
                                const unsigned int b) const
   {
-    double extent = 0.;
-    for (const auto &outline : drawn)
-      extent = std::max(extent, outline->extent());
-    const double       tol = 1e-6 * extent;
+    const double       tol = 1e-6 * extent();
     const unsigned int N   = n_bodies();
     for (const auto &cell : mesh.active_cell_iterators())
       for (const auto &face : cell->face_iterators())

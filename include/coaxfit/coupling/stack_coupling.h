@@ -88,6 +88,13 @@ namespace coaxfit
       return whole ? l : 2. * l;
     }
 
+    /** Model z of the joint's middle, from end to end (0 in a half model). */
+    double
+    centre() const
+    {
+      return whole ? 0.5 * (z.front() + z.back()) : 0.;
+    }
+
     /**
      * Model z of the joint's mid-plane: its middle (0 in a half model);
      * where that is not inside a piece (in a relief groove, or at a
@@ -96,7 +103,7 @@ namespace coaxfit
     double
     middle_z() const
     {
-      const double m = whole ? 0.5 * (z.front() + z.back()) : 0.;
+      const double m = centre();
       if (pieces.empty())
         return m;
       const double tol = 1e-9 * (z.back() - z.front());

@@ -101,6 +101,14 @@ namespace coaxfit
   check_apart(const SectionOutline &inner, const SectionOutline &outer);
 
   /**
+   * The radii (mm) at which the boundary of @p outline crosses the plane
+   * z = @p z, arcs as 32 chords; a vertex at z counts once (each straight
+   * piece half open).
+   */
+  std::vector<double>
+  radii_at(const SectionOutline &outline, double z);
+
+  /**
    * The outer diameter of @p hub averaged over the axial extent [@p z_start,
    * @p z_end] of a joint (mm): at each z the largest diameter of the
    * section there, its mean over z. DIN 7190's plain-cylinder estimate of a

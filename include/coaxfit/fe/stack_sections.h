@@ -148,6 +148,20 @@ namespace coaxfit
     bool
     surface_through(unsigned int b, double r, double z) const;
 
+    /**
+     * The first groove of joint @p k (joint_grooves()) that a largest
+     * diametral interference @p U (mm) would close: its clearance no more
+     * than U / 2, so its bottom would touch, which is not modelled.
+     */
+    std::optional<std::array<double, 3>>
+    closing_groove(const unsigned int k, const double U) const
+    {
+      for (const std::array<double, 3> &groove : grooves[k])
+        if (groove[2] <= U / 2.)
+          return groove;
+      return std::nullopt;
+    }
+
     /** The pieces of joint @p k in the drawing's z (mm), ascending. */
     const std::vector<std::pair<double, double>> &
     joint_drawn_pieces(unsigned int k) const

@@ -83,23 +83,13 @@ namespace
             const std::vector<Body>   &bodies,
             const std::vector<double> &U)
   {
-    std::ostringstream s;
-    s.precision(12);
-    s << "subsection Geometry\n";
-    for (const Body &b : bodies)
-      if (b.axial_cells > 0)
-        {
-          const std::string file = name + "_" + b.name + ".geo";
-          std::ofstream(file) << ring_geo(b);
-          s << "  set " << b.name << " section = " << file << '\n';
-        }
-      else
-        s << "  subsection " << b.name
-          << "\n    set Inner diameter = " << b.d_in
-          << "\n    set Outer diameter = " << b.d_out
-          << "\n    set Length = " << length << "\n  end\n";
-    s << "end\n";
-    return s.str() + lame_stack_entries(rings_of(bodies), U);
+    return lame_stack_prm(bodies, U, length, [&](const Body &b) {
+      if (b.axial_cells == 0)
+        return std::string();
+      const std::string file = name + "_" + b.name + ".geo";
+      std::ofstream(file) << ring_geo(b);
+      return file;
+    });
   }
 
   /** Part 1: @p bodies against the compound cylinders. */

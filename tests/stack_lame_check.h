@@ -62,6 +62,37 @@ namespace coaxfit_test
   }
 
   /**
+   * A parameter file of the test's @p bodies, each a plain ring @p length
+   * mm long unless @p section (the body) gives the value of its
+   * `Geometry/<body> section`, with interferences @p U
+   * (lame_stack_entries()).
+   */
+  template <typename Body, typename Section>
+  std::string
+  lame_stack_prm(const std::vector<Body>   &bodies,
+                 const std::vector<double> &U,
+                 const double               length,
+                 const Section             &section)
+  {
+    std::ostringstream s;
+    s.precision(12);
+    s << "subsection Geometry\n";
+    for (const Body &b : bodies)
+      {
+        const std::string text = section(b);
+        if (!text.empty())
+          s << "  set " << b.name << " section = " << text << '\n';
+        else
+          s << "  subsection " << b.name
+            << "\n    set Inner diameter = " << b.d_in
+            << "\n    set Outer diameter = " << b.d_out
+            << "\n    set Length = " << length << "\n  end\n";
+      }
+    s << "end\n";
+    return s.str() + lame_stack_entries(rings_of(bodies), U);
+  }
+
+  /**
    * Run @p prm in the directory @p name and print every joint's pressure
    * (at the mid-plane and its mean) against the compound cylinders of
    * @p rings with interferences @p U, to 1e-5.

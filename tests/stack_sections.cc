@@ -69,27 +69,19 @@ namespace
             const std::vector<double> &U,
             const bool                 extra_corner = false)
   {
-    std::ostringstream s;
-    s.precision(12);
-    s << "subsection Geometry\n";
-    const double z = length / 2.;
-    for (const Body &b : bodies)
-      if (b.section)
-        {
-          s << "  set " << b.name << " section = " << -z << ", " << b.d_in
-            << "; " << z << ", " << b.d_in << "; " << z << ", " << b.d_out
-            << "; ";
-          if (extra_corner)
-            s << z / 2. << ", " << b.d_out << "; ";
-          s << -z << ", " << b.d_out << "; " << -z << ", " << b.d_in << "\n";
-        }
-      else
-        s << "  subsection " << b.name
-          << "\n    set Inner diameter = " << b.d_in
-          << "\n    set Outer diameter = " << b.d_out
-          << "\n    set Length = " << length << "\n  end\n";
-    s << "end\n";
-    return s.str() + lame_stack_entries(rings_of(bodies), U);
+    return lame_stack_prm(bodies, U, length, [&](const Body &b) {
+      if (!b.section)
+        return std::string();
+      std::ostringstream s;
+      s.precision(12);
+      const double z = length / 2.;
+      s << -z << ", " << b.d_in << "; " << z << ", " << b.d_in << "; " << z
+        << ", " << b.d_out << "; ";
+      if (extra_corner)
+        s << z / 2. << ", " << b.d_out << "; ";
+      s << -z << ", " << b.d_out << "; " << -z << ", " << b.d_in;
+      return s.str();
+    });
   }
 
   /** Part 1: @p bodies against the compound cylinders. */

@@ -27,7 +27,8 @@ directory name) and with a length scale:
   part_3d          the revolved part, cut open (360 - DEG degrees removed),
                    with an axes grid in mm;
   contact_chart    contact pressure (left axis) and gap (right axis) along
-                   the joint, z in mm (z >= 0 for a half model);
+                   the joint, z in mm (z >= 0 for a half model); the seats
+                   of a joint beside a relief groove each drawn apart;
   separation_zoom  each separated zone close up (separation_zoom_2, ... for
                    further zones, largest gap first, at most 4): the radial
                    displacement relative to a parabola fitted to the hub's
@@ -41,7 +42,7 @@ Colours: the field NAME (default von_Mises_MPa; any scalar array of the
 bodies, e.g. sigma_tt_MPa) with a colour range of each body's own (copied by
 a Calculator into BODY_FIELD, e.g. shaft_von_Mises_MPa, so that each body
 has its own lookup table and scalar bar). The range leaves out the peak at the
-ends of the contact (the edge singularity, within Design/Edge distance of
+ends of the contact and of its pieces beside a groove (the edge singularity, within Design/Edge distance of
 the edge as in summary.json, else 5 % of the contact length); values above
 the range are drawn magenta, below it black, and the peaks are printed.
 Stresses are cylindrical components (r, z, theta): mirrored about the
@@ -202,9 +203,9 @@ except ImportError:
 
 from paraview.simple import (AppendDatasets, AssignViewToLayout, Calculator,  # noqa: E402
                              ColorBy, CreateLayout, CreateView, Delete, ExtractBlock,
-                             ExtractSurface, GetColorTransferFunction, GetLayout, GetLayouts,
-                             GetScalarBar, GetViewsInLayout, MergeBlocks, PVDReader,
-                             Reflect, RemoveLayout, Render, RenameSource, RenameView,
+                             ExtractSelection, ExtractSurface, GetColorTransferFunction,
+                             GetLayout, GetLayouts, GetScalarBar, GetViewsInLayout,
+                             IDSelectionSource, MergeBlocks, PVDReader, Reflect, RemoveLayout, Render, RenameSource, RenameView,
                              RotationalExtrusion, Ruler, SaveScreenshot, SaveState,
                              SetActiveSource, SetActiveView, Show, Text, Transform,
                              WarpByVector)
@@ -262,6 +263,18 @@ def fetch_points(source):
     return points[:, :2], arrays
 
 
+def contact_pieces(source):
+    """The point indices of each cell (polyline) of a merged contact
+    surface, or of all its points if it has no cells."""
+    data = servermanager.Fetch(source)
+    pieces = []
+    for cell in range(data.GetNumberOfCells()):
+        ids = data.GetCell(cell).GetPointIds()
+        pieces.append(numpy.array([ids.GetId(k) for k in range(ids.GetNumberOfIds())],
+                                  dtype=int))
+    return pieces or [numpy.arange(data.GetNumberOfPoints())]
+
+
 class Part:
     """One block of solution.pvd: its pipeline item (merged into one
     dataset), its points and point arrays."""
@@ -272,6 +285,9 @@ class Part:
                                                         Selectors=["/Root/" + name]))
         self.source = named(name, MergeBlocks(Input=block))
         self.points, self.arrays = fetch_points(self.source)
+        # A contact surface's pieces: the point indices of each polyline
+        # (several for a joint beside a relief groove).
+        self.pieces = contact_pieces(self.source) if kind == "contact" else []
 
 
 def contact_zones(surface):
@@ -527,15 +543,17 @@ class Viewer:
         self.scale = self.options["scale"] or (0.03 * self.r_outer / u_max
                                                if u_max > 0 else 1.0)
 
-        # The ends of the contact (not the mid-plane of a half model): the
-        # colour ranges leave out the edge singularity around them.
+        # The ends of the contact's pieces (not the mid-plane of a half
+        # model): the colour ranges leave out the edge singularity around
+        # them, also beside a relief groove.
         self.ends = []
         length = 0.0
         for c in self.contacts:
             z = c.points[:, 1]
-            for i in (int(numpy.argmin(z)), int(numpy.argmax(z))):
-                if not (self.half and abs(z[i]) <= 1e-9 * (abs(self.z_high) or 1.0)):
-                    self.ends.append(c.points[i])
+            for piece in c.pieces:
+                for i in (piece[numpy.argmin(z[piece])], piece[numpy.argmax(z[piece])]):
+                    if not (self.half and abs(z[i]) <= 1e-9 * (abs(self.z_high) or 1.0)):
+                        self.ends.append(c.points[i])
             length = max(length, (2.0 if self.half else 1.0) * float(z.max() - z.min()))
         edge = (self.run.get("design", {}) or {}).get("edge_distance")
         self.edge = edge if isinstance(edge, (int, float)) and edge > 0 else 0.05 * length
@@ -760,18 +778,21 @@ class Viewer:
         RenameView("contact_chart", view)
         gap_high = 0.0
         for k, c in enumerate(self.contacts):
-            display = Show(c.source, view)
-            display.UseIndexForXAxis = 0
-            display.XArrayName = "Points_Y"
-            display.SeriesVisibility = ["contact_pressure_MPa", "gap_mm"]
             pressure, gap = SERIES_COLOURS[k % len(SERIES_COLOURS)]
             prefix = "%s: " % c.name if len(self.contacts) > 1 else ""
-            display.SeriesLabel = ["contact_pressure_MPa", prefix + "contact pressure (MPa)",
-                                   "gap_mm", prefix + "gap (mm, right axis)"]
-            display.SeriesColor = (["contact_pressure_MPa"] + [str(v) for v in pressure]
-                                   + ["gap_mm"] + [str(v) for v in gap])
-            display.SeriesLineThickness = ["contact_pressure_MPa", "3", "gap_mm", "3"]
-            display.SeriesPlotCorner = ["contact_pressure_MPa", "0", "gap_mm", "1"]
+            for piece, source in enumerate(self.chart_pieces(c)):
+                display = Show(source, view)
+                display.UseIndexForXAxis = 0
+                display.XArrayName = "Points_Y"
+                display.SeriesVisibility = ["contact_pressure_MPa", "gap_mm"]
+                # One legend entry per joint: its further pieces unlabelled.
+                display.SeriesLabel = (["contact_pressure_MPa", "", "gap_mm", ""] if piece else
+                                       ["contact_pressure_MPa", prefix + "contact pressure (MPa)",
+                                        "gap_mm", prefix + "gap (mm, right axis)"])
+                display.SeriesColor = (["contact_pressure_MPa"] + [str(v) for v in pressure]
+                                       + ["gap_mm"] + [str(v) for v in gap])
+                display.SeriesLineThickness = ["contact_pressure_MPa", "3", "gap_mm", "3"]
+                display.SeriesPlotCorner = ["contact_pressure_MPa", "0", "gap_mm", "1"]
             gap_high = max(gap_high, float(c.arrays["gap_mm"].max()))
         view.SortByXAxis = 1
         view.BottomAxisTitle = "z (mm)" + (", from the mid-plane" if self.half else "")
@@ -800,6 +821,23 @@ class Viewer:
             setattr(view, axis + "AxisTitleFontSize", 15)
             setattr(view, axis + "AxisLabelFontSize", 13)
         self.render(view)
+
+    def chart_pieces(self, contact):
+        """The sources the chart draws for a contact surface: the surface,
+        or each of its polylines apart (the pieces of a joint beside a relief
+        groove: a line joining them would cross the groove)."""
+        if len(contact.pieces) <= 1:
+            return [contact.source]
+        pieces = [named("%s: piece %d" % (contact.name, cell + 1), ExtractSelection(
+            Input=contact.source, Selection=IDSelectionSource(IDs=[0, cell], FieldType="CELL")))
+            for cell in range(len(contact.pieces))]
+        ranges = []
+        for piece in pieces:
+            z = fetch_points(piece)[0][:, 1]
+            ranges.append("z %.6g to %.6g" % (z.min(), z.max()))
+        print("  %s: %d pieces, drawn apart in the chart (%s mm)"
+              % (contact.name, len(pieces), ", ".join(ranges)))
+        return pieces
 
     def zoom_view(self, number, zone):
         """A separated zone close up. The radial displacement is drawn

@@ -31,10 +31,15 @@
 //    1 mm beside one of 20 mm gives a caution (its mean is its ends').
 //    prm/examples/two_seats.prm's contact line for ParaView is a polyline
 //    per seat.
+//    Its groove's least radial gap (summary.json joints[].grooves) against
+//    the displacements ParaView reads from the VTU files there.
 // 5. A groove shallower than the radial interference (its bottom would
 //    touch; the shaft under it can rise at most by the interference and
 //    the hub's bore only widens, so a deeper one stays open): exit 1, one
 //    line naming the joint's Fit.
+// 6. A long shallow groove that a hot shaft closes in operation: exit 1,
+//    one line naming the joint's Fit and the least gap; open when
+//    assembled.
 
 #include "run_executable.h"
 #include "run_summary.h"
@@ -42,6 +47,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -287,6 +293,48 @@ main()
                     "a line per seat" :
                     "NOT a line per seat")
               << '\n';
+    // The groove's least gap: 2 mm drawn less 0.025 mm of radial
+    // interference plus the hub's u_r less the shaft's at z -5 (ParaView's
+    // ProbeLocation on hub.vtu at r 27: 0.0144182 mm; on shaft.vtu at r 25:
+    // 0.0216687 less the 0.025 mm of interference its displacement_mm
+    // holds, -0.0033313 mm): 1.992749 mm.
+    const nlohmann::json g = read_summary("seats")["joints"][0]["grooves"][0];
+    std::cout << "  groove z " << g["z_from"].get<double>() << " to "
+              << g["z_to"].get<double>() << ": least radial gap "
+              << agreement(g["least_gap"], 1.992749, 1e-6) << " at z "
+              << g["least_gap_z"].get<double>() << '\n';
+  }
+
+  std::cout << "\n6. A groove that loads of operation close\n";
+  // A groove 40 mm long and 0.05 mm deep (radially) between seats of
+  // 5 mm: 0.025 mm of interference leave it open when assembled; with the
+  // shaft at 200 C (the hub at 20 C) the shaft under it grows freely by
+  // about alpha dT r = 0.05 mm and closes it: exit 1, nothing written.
+  {
+    const std::string long_groove
+      = "-25, 50; -20, 50; -20, 50.1; 20, 50.1; 20, 50; 25, 50; 25, 100; "
+        "-25, 100; -25, 50";
+    std::ofstream("long_groove.prm") << groove_prm(long_groove);
+    std::filesystem::remove_all("long_groove");
+    RunResult r = run_coaxfit("long_groove", quiet + "long_groove.prm");
+    const nlohmann::json g
+      = read_summary("long_groove")["joints"][0]["grooves"][0];
+    std::cout << "assembled: exit " << r.exit_code << ", least radial gap "
+              << std::setprecision(4) << g["least_gap"].get<double>()
+              << std::setprecision(6) << " mm at z "
+              << g["least_gap_z"].get<double>() << '\n';
+    std::ofstream("hot_shaft.prm")
+      << groove_prm(long_groove)
+      << "subsection Material\n  subsection Shaft\n"
+         "    set Thermal expansion = 11.5e-6\n  end\n  subsection Hub\n"
+         "    set Thermal expansion = 11.5e-6\n  end\nend\n"
+         "subsection Operation\n  set Shaft temperature = 200\nend\n";
+    std::filesystem::remove_all("hot_shaft");
+    r = run_coaxfit("hot_shaft", quiet + "hot_shaft.prm");
+    std::cout << "the shaft at 200 C: exit " << r.exit_code << ", "
+              << (std::filesystem::exists("hot_shaft") ? "written" :
+                                                         "nothing written")
+              << "\n  " << gist(r.message, 70) << " (" << r.lines << " line)\n";
   }
 
   std::cout << "\n5. Bad input\n";

@@ -781,6 +781,7 @@ namespace coaxfit
               }
           f.pieces.push_back({{lo, hi, force / weight}});
         }
+    f.grooves = groove_gaps(k, state_fields);
     // The gap of each point from the bodies' own displacements (the loads'
     // answers included).
     const std::vector<double> gaps
@@ -864,6 +865,48 @@ namespace coaxfit
     for (const double r : check_radii(b))
       along.push_back(stresses_along_radius(*bodies[b], field, r));
     return along;
+  }
+
+
+
+  std::vector<std::array<double, 5>>
+  StackFit::groove_gaps(const unsigned int                 k,
+                        const std::vector<Vector<double>> &state_fields) const
+  {
+    std::vector<std::array<double, 5>> result;
+    if (!parameters.sections)
+      return result;
+    const StackSections &sections = *parameters.sections;
+    const StackJoint    &joint    = stack_joints[k];
+    const double         offset   = sections.drawing_offset();
+    for (const auto &[from, to, clearance] : sections.joint_grooves(k))
+      {
+        std::array<double, 5> groove{
+          {from, to, clearance, std::numeric_limits<double>::max(), from}};
+        // 41 planes over the inner four fifths, as the drawn clearance.
+        for (unsigned int s = 0; s <= 40; ++s)
+          {
+            const double z = from + (0.1 + 0.8 * s / 40.) * (to - from);
+            const auto [outside, bore] = sections.groove_radii(k, z);
+            // A half model holds the mirror image of z < 0.
+            const double z_model
+              = joint.whole ? z - offset : std::abs(z - offset);
+            const double gap = bore - outside - joint.interference
+                               + displacement_at(*bodies[k + 1],
+                                                 state_fields[k + 1],
+                                                 Point<2>(bore, z_model))[0]
+                               - displacement_at(*bodies[k],
+                                                 state_fields[k],
+                                                 Point<2>(outside, z_model))[0];
+            if (gap < groove[3])
+              {
+                groove[3] = gap;
+                groove[4] = z;
+              }
+          }
+        result.push_back(groove);
+      }
+    return result;
   }
 
 
@@ -1354,11 +1397,36 @@ namespace coaxfit
           }
       }
 
+    check_grooves();
     surfaces_out.clear();
     for (const std::string &name : parameters.report_surfaces)
       surfaces_out.push_back(surface(name));
     verdict               = Verdict(failed_criteria());
     timing["postprocess"] = seconds_since(start);
+  }
+
+
+
+  void
+  StackFit::check_grooves() const
+  {
+    for (const bool operation : {false, true})
+      for (const JointFigures &f : operation ? joints_out : joints_assembly)
+        for (const auto &[from, to, clearance, gap, z] : f.grooves)
+          if (!(gap > 0.))
+            throw InputError(
+              "parameter Fit/" + f.name
+              + ": the joint's relief groove from z = " + number(from, 6)
+              + " to " + number(to, 6) + " closes "
+              + (operation && has_loads() ? "under the loads of Operation" :
+                                            "in the state of assembly")
+              + ": its least radial gap is " + number(gap, 4)
+              + " mm at z = " + number(z, 6) + " (the drawn clearance "
+              + number(clearance, 6) + " mm less the radial interference "
+              + number(f.effective_interference / 2., 6)
+              + " mm and what the bodies' displacements take), so its bottom "
+                "would touch, which is not modelled; allowed: a groove that "
+                "stays open (deeper, or a smaller interference or loads)");
   }
 
 
@@ -1548,6 +1616,10 @@ namespace coaxfit
                     "is not inside one)" :
                     ", the joint's middle")
               << '\n';
+          for (const auto &[from, to, clearance, gap, z] : f.grooves)
+            out << "  " << f.name << ": relief groove z " << from << " to "
+                << to << " open, least radial gap " << gap << " mm at z " << z
+                << " (drawn clearance " << clearance << " mm)\n";
         }
     for (const JointFigures &f : joints_out)
       if (!f.closed)

@@ -64,6 +64,13 @@ namespace coaxfit
                                    {"z_to", to},
                                    {"length", to - from},
                                    {"mean_pressure", number_or_null(mean)}});
+          j["grooves"] = Json::array();
+          for (const auto &[from, to, clearance, gap, z] : f.grooves)
+            j["grooves"].push_back({{"z_from", from},
+                                    {"z_to", to},
+                                    {"clearance", clearance},
+                                    {"least_gap", number_or_null(gap)},
+                                    {"least_gap_z", z}});
         }
       j["contact"] = contact_json(f);
       j["alone"]   = {{"pressure",

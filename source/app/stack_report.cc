@@ -219,7 +219,14 @@ namespace coaxfit
           md << ". Its p(0) and the mid-plane figures of "
              << (k == 0 ? p.bodies[0] + " and " : std::string())
              << p.bodies[k + 1] << " are taken at z "
-             << design_figure(f.mid_plane_z) << ".\n";
+             << design_figure(f.mid_plane_z) << ".";
+          for (const auto &[from, to, clearance, gap, z] : f.grooves)
+            md << " The relief groove from z " << design_figure(from) << " to "
+               << design_figure(to) << " (drawn clearance "
+               << design_figure(clearance)
+               << " mm) stays open: its least radial gap is "
+               << design_figure(gap) << " mm at z " << design_figure(z) << ".";
+          md << "\n";
         }
     bool friction = false;
     for (const JointFigures &f : joints_out)

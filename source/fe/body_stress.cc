@@ -112,30 +112,74 @@ namespace coaxfit
 
 
 
+  namespace
+  {
+    /**
+     * The cell of @p body that contains @p point and the point's unit-cell
+     * coordinates (projected onto the cell); a point outside the mesh by
+     * less than @p tolerance of a cell's size (in the unit cell) is taken
+     * on the cell it is nearest.
+     */
+    std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
+    cell_around(const BodyDiscretization &body,
+                const Point<2>           &point,
+                const double              tolerance,
+                const std::string        &caller)
+    {
+      auto found
+        = GridTools::find_active_cell_around_point(MappingQ1<2>(),
+                                                   body.get_dof_handler(),
+                                                   point);
+      if (found.first == body.get_dof_handler().end())
+        found = GridTools::find_active_cell_around_point(MappingQ1<2>(),
+                                                         body.get_dof_handler(),
+                                                         point,
+                                                         std::vector<bool>(),
+                                                         tolerance);
+      if (found.first == body.get_dof_handler().end())
+        throw std::logic_error(caller
+                               + ": the point (r = " + std::to_string(point[0])
+                               + ", z = " + std::to_string(point[1])
+                               + ") is not in the " + body.name() + "'s mesh");
+      return {found.first, GeometryInfo<2>::project_to_unit_cell(found.second)};
+    }
+  } // namespace
+
+
+
   StressState
   stress_at(const BodyDiscretization &body,
             const Vector<double>     &solution,
             const Point<2>           &point)
   {
-    auto found
-      = GridTools::find_active_cell_around_point(MappingQ1<2>(),
-                                                 body.get_dof_handler(),
-                                                 point);
     // A point on a slanted surface (a cone's joint) may lie outside by
     // round-off: then the cell within 1e-6 of its size.
-    if (found.first == body.get_dof_handler().end())
-      found = GridTools::find_active_cell_around_point(MappingQ1<2>(),
-                                                       body.get_dof_handler(),
-                                                       point,
-                                                       std::vector<bool>(),
-                                                       1e-6);
-    if (found.first == body.get_dof_handler().end())
-      throw std::logic_error("stress_at: the point (r = "
-                             + std::to_string(point[0])
-                             + ", z = " + std::to_string(point[1])
-                             + ") is not in the " + body.name() + "'s mesh");
-    const Point<2> unit = GeometryInfo<2>::project_to_unit_cell(found.second);
-    return stresses_in_cell(body, solution, found.first, {unit})[0];
+    const auto [cell, unit] = cell_around(body, point, 1e-6, "stress_at");
+    return stresses_in_cell(body, solution, cell, {unit})[0];
+  }
+
+
+
+  Tensor<1, 2>
+  displacement_at(const BodyDiscretization &body,
+                  const Vector<double>     &solution,
+                  const Point<2>           &point)
+  {
+    // A point of a drawn arc (taken as chords) may lie outside the mesh,
+    // whose boundary follows the arc with chords of its own: then on the
+    // cell within a quarter of its size.
+    const auto [cell, unit] = cell_around(body, point, 0.25, "displacement_at");
+    FEValues<2> fe_values(MappingQ1<2>(),
+                          body.get_dof_handler().get_fe(),
+                          Quadrature<2>(std::vector<Point<2>>{unit}),
+                          update_values);
+    fe_values.reinit(cell);
+    std::vector<Vector<double>> values(1, Vector<double>(2));
+    fe_values.get_function_values(solution, values);
+    Tensor<1, 2> u;
+    u[0] = values[0][0];
+    u[1] = values[0][1];
+    return u;
   }
 
 

@@ -138,15 +138,8 @@ namespace coaxfit
             double clearance = std::numeric_limits<double>::infinity();
             for (unsigned int s = 0; s <= 200; ++s)
               {
-                const double z    = a + (0.1 + 0.8 * s / 200.) * (b - a);
-                double       bore = std::numeric_limits<double>::infinity(),
-                       outside    = 0.;
-                for (const double r : radii_at(*drawn[k + 1], z))
-                  if (r >= radius[k] - tol)
-                    bore = std::min(bore, r);
-                for (const double r : radii_at(*drawn[k], z))
-                  if (r <= radius[k] + tol)
-                    outside = std::max(outside, r);
+                const auto [outside, bore]
+                  = groove_radii(k, a + (0.1 + 0.8 * s / 200.) * (b - a));
                 clearance = std::min(clearance, bore - outside);
               }
             grooves[k].push_back({{a, b, clearance}});
@@ -411,6 +404,22 @@ namespace coaxfit
   {
     const auto [lo, hi] = axial_range(*drawn[b]);
     return hi - lo;
+  }
+
+
+
+  std::pair<double, double>
+  StackSections::groove_radii(const unsigned int k, const double z) const
+  {
+    const double tol  = 1e-6 * extent();
+    double       bore = std::numeric_limits<double>::infinity(), outside = 0.;
+    for (const double r : radii_at(*drawn[k + 1], z))
+      if (r >= radius[k] - tol)
+        bore = std::min(bore, r);
+    for (const double r : radii_at(*drawn[k], z))
+      if (r <= radius[k] + tol)
+        outside = std::max(outside, r);
+    return {outside, bore};
   }
 
 

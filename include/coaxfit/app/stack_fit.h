@@ -42,6 +42,17 @@ namespace coaxfit
      * empty for one piece.
      */
     std::vector<std::array<double, 3>> pieces;
+    /**
+     * The relief grooves between the pieces (empty for one piece): each
+     * one's drawing z from and to, its drawn radial clearance, the least
+     * radial gap left across it in this state and the drawing z of that
+     * least gap (mm). The gap is the clearance less the joint's whole
+     * radial interference (as if the groove's surface carried it) plus
+     * the outer body's radial displacement less the inner one's, over the
+     * groove's inner four fifths; no more than 0 would touch, which is not
+     * modelled (StackFit::postprocess() refuses it).
+     */
+    std::vector<std::array<double, 5>> grooves;
     bool                               closed; ///< every point in contact
     double       contact_length;               ///< mm, full length in contact
     unsigned int separated_points;
@@ -396,6 +407,23 @@ namespace coaxfit
      * fields @p state_fields leave with the radial @p interference: 2
      * (u_outer - u_inner - interference); about 0 where in contact.
      */
+    /**
+     * The relief grooves of joint @p k with the least radial gap the
+     * bodies' fields @p state_fields leave across each
+     * (JointFigures::grooves).
+     */
+    std::vector<std::array<double, 5>>
+    groove_gaps(unsigned int                       k,
+                const std::vector<Vector<double>> &state_fields) const;
+
+    /**
+     * Refuse (InputError naming Fit/<joint>) a relief groove that the
+     * bodies close in the state of assembly or in operation: its least gap
+     * no more than 0 (its bottom would touch, which is not modelled).
+     */
+    void
+    check_grooves() const;
+
     std::vector<double>
     joint_gaps(unsigned int                       k,
                double                             interference,

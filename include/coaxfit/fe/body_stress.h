@@ -53,6 +53,16 @@ namespace coaxfit
             const Point<2>           &point);
 
   /**
+   * The displacement (u_r, u_z) of @p solution at @p point of @p body (mm),
+   * from the cell that contains it; a point of a surface drawn with arcs
+   * may lie a little outside the mesh: then on the nearest cell.
+   */
+  Tensor<1, 2>
+  displacement_at(const BodyDiscretization &body,
+                  const Vector<double>     &solution,
+                  const Point<2>           &point);
+
+  /**
    * The stresses of @p solution at the support points of the boundary faces
    * of @p body at the radius @p r (a surface r = const), ordered by z; the
    * values of the two cells at a shared vertex are averaged.

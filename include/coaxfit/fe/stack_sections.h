@@ -130,6 +130,14 @@ namespace coaxfit
       return grooves[k];
     }
 
+    /**
+     * Across a groove of joint @p k at drawing z @p z: the inner section's
+     * outside and the outer section's bore there (mm; the surfaces that
+     * face each other across the groove).
+     */
+    std::pair<double, double>
+    groove_radii(unsigned int k, double z) const;
+
     /** The largest extent of the sections (mm). */
     double
     extent() const

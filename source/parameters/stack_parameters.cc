@@ -528,8 +528,10 @@ namespace coaxfit
                       fit_case,
                       "Which interference of the joints' ISO fits the run "
                       "takes (every joint the same): min, mean or max. "
-                      "Joints given a Diametral interference take it.",
-                      Patterns::Selection("min|mean|max"));
+                      "Joints given a Diametral interference take it. (all, "
+                      "the three in one run, is for two bodies; a stack "
+                      "runs them as --sweep \"Fit/Case=min,mean,max\".)",
+                      Patterns::Selection("min|mean|max|all"));
     default_fit.press_in_friction_coefficient = 0.08;
     default_fit.declare_parameters(prm,
                                    "every joint that does not give its own "
@@ -971,6 +973,12 @@ namespace coaxfit
                              + " mm, where ISO 286 gives no fits (allowed: "
                                "over 1 up to 500 mm)");
       }
+    if (fit_case == "all")
+      throw InputError(
+        "parameter Fit/Case = all: a stack runs one case of its ISO fits at a "
+        "time; allowed: min, mean or max (for the three in one command: "
+        "--sweep \"Fit/Case=min,mean,max\", a subdirectory and a row with "
+        "the verdict each)");
     if (fit_case != "mean" && !iso && !select_mode())
       throw InputError("parameter Fit/Case = " + fit_case
                        + ": no joint has an ISO fit, whose smallest or "

@@ -3,6 +3,7 @@
 #include <coaxfit/app/plastic_fit.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/app/stack_batch.h>
+#include <coaxfit/app/stack_case_study.h>
 #include <coaxfit/app/stack_fit.h>
 #include <coaxfit/app/stack_sweep.h>
 #include <coaxfit/app/usage.h>
@@ -590,6 +591,16 @@ namespace
           {
             const StackParameters parameters
               = read_stack_parameters(line.filenames[0], line.overrides);
+            if (parameters.fit_case == "all")
+              {
+                const int code = StackCaseStudy(line.filenames[0],
+                                                line.overrides,
+                                                !line.quiet,
+                                                std::cout)
+                                   .run();
+                check_standard_output();
+                return code;
+              }
             StackFit  fit(parameters);
             const int code = fit.run(std::cout, !line.quiet);
             check_standard_output();

@@ -1434,6 +1434,11 @@ namespace coaxfit
   int
   StackFit::run(std::ostream &out, const bool progress, const std::string &into)
   {
+    if (parameters.fit_case == "all")
+      throw InputError(
+        "parameter Fit/Case = all: the study of the ISO fits' corners is a "
+        "run of its own (one parameter file, no --sweep, not one case of "
+        "several files); allowed here: min, mean or max");
     const auto start = std::chrono::steady_clock::now();
     out << "coaxfit: " << parameters.case_name << ", "
         << parameters.bodies.size() << " bodies (";

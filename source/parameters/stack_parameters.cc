@@ -527,10 +527,14 @@ namespace coaxfit
     prm.add_parameter("Case",
                       fit_case,
                       "Which interference of the joints' ISO fits the run "
-                      "takes (every joint the same): min, mean or max. "
-                      "Joints given a Diametral interference take it. (all, "
-                      "the three in one run, is for two bodies; a stack "
-                      "runs them as --sweep \"Fit/Case=min,mean,max\".)",
+                      "takes (every joint that does not give its own Case "
+                      "the same): min, mean or max; all: one run of each "
+                      "corner of the joints' bands (every joint at its "
+                      "smallest or largest interference, each in turn) and "
+                      "of their means, into subdirectories named by the "
+                      "cases (min, mean, max, min-max, ...), with one table "
+                      "and one verdict. Joints given a Diametral "
+                      "interference take it.",
                       Patterns::Selection("min|mean|max|all"));
     default_fit.press_in_friction_coefficient = 0.08;
     default_fit.declare_parameters(prm,
@@ -540,6 +544,13 @@ namespace coaxfit
       {
         prm.enter_subsection(joint_name(k));
         joint_entries[k].declare_parameters(prm, "the joint " + joint_name(k));
+        prm.add_parameter("Case",
+                          joint_cases[k],
+                          "Which interference of this joint's ISO fit the "
+                          "run takes: min, mean or max; empty: Fit/Case's "
+                          "(a Fit/Case = all study varies only the joints "
+                          "without their own).",
+                          Patterns::Anything());
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -973,12 +984,26 @@ namespace coaxfit
                              + " mm, where ISO 286 gives no fits (allowed: "
                                "over 1 up to 500 mm)");
       }
-    if (fit_case == "all")
+    for (unsigned int k = 0; k < n_joints(); ++k)
+      {
+        const std::string &c = joint_cases[k];
+        if (!c.empty() && c != "min" && c != "mean" && c != "max")
+          throw InputError("parameter Fit/" + joint_name(k) + "/Case = " + c
+                           + ": allowed is min, mean, max or nothing "
+                             "(Fit/Case's)");
+        if (!c.empty() && fits[k].iso_fit.empty()
+            && !(select_mode() && selected[k]))
+          throw InputError("parameter Fit/" + joint_name(k) + "/Case = " + c
+                           + ": the joint has no ISO fit, whose smallest or "
+                             "largest interference it would choose (its "
+                             "Diametral interference is used as given); "
+                             "allowed: nothing, or an ISO fit");
+      }
+    if (fit_case == "all" && select_mode())
       throw InputError(
-        "parameter Fit/Case = all: a stack runs one case of its ISO fits at a "
-        "time; allowed: min, mean or max (for the three in one command: "
-        "--sweep \"Fit/Case=min,mean,max\", a subdirectory and a row with "
-        "the verdict each)");
+        "parameter Fit/Case = all with Design/Mode = select: the selection "
+        "judges every corner of the chosen fits' bands itself and runs them "
+        "at one case; allowed: min, mean or max");
     if (fit_case != "mean" && !iso && !select_mode())
       throw InputError("parameter Fit/Case = " + fit_case
                        + ": no joint has an ISO fit, whose smallest or "
@@ -1119,13 +1144,13 @@ namespace coaxfit
     JointFit    &fit           = fits[k];
     const double U_min         = 1e-3 * iso.min_interference();
     const double U_max         = 1e-3 * iso.max_interference();
-    fit.nominal_interference   = fit_case == "min" ? U_min :
-                                 fit_case == "max" ? U_max :
-                                                     0.5 * (U_min + U_max);
+    fit.nominal_interference   = case_of(k) == "min" ? U_min :
+                                 case_of(k) == "max" ? U_max :
+                                                       0.5 * (U_min + U_max);
     fit.diametral_interference = fit.nominal_interference - fit.smoothing_loss;
     fit.largest_interference   = U_max;
     fit.iso_fit                = iso.name;
-    fit.source                 = "ISO fit " + iso.name + ", " + fit_case
+    fit.source                 = "ISO fit " + iso.name + ", " + case_of(k)
                  + ", chosen by Design/Mode = select";
   }
 
@@ -1310,6 +1335,7 @@ namespace coaxfit
       p.section_text.resize(p.bodies.size());
       p.materials.resize(p.bodies.size());
       p.joint_entries.resize(p.n_joints());
+      p.joint_cases.resize(p.n_joints());
       return p;
     }
   } // namespace
@@ -1604,13 +1630,13 @@ namespace coaxfit
             const double U_min = 1e-3 * iso.min_interference();
             const double U_max = 1e-3 * iso.max_interference();
             fit.diametral_interference
-              = p.fit_case == "min" ? U_min :
-                p.fit_case == "max" ? U_max :
-                                      0.5 * (U_min + U_max);
+              = p.case_of(k) == "min" ? U_min :
+                p.case_of(k) == "max" ? U_max :
+                                        0.5 * (U_min + U_max);
             fit.iso_fit              = iso.name;
             fit.largest_interference = U_max;
             fit.source = (mine ? path : std::string("Fit/")) + "ISO fit "
-                         + iso.name + ", " + p.fit_case;
+                         + iso.name + ", " + p.case_of(k);
           }
         else if (default_given)
           {

@@ -48,20 +48,6 @@ namespace coaxfit
     run();
 
   private:
-    /** One value's outcome: its exit code, error and figures. */
-    struct Row
-    {
-      int                 exit_code = 1;
-      std::string         error;
-      bool                written = false;
-      std::vector<double> values; ///< in the order of the CSV's columns
-      std::string         verdict;
-    };
-
-    /** The CSV's columns after the value: each joint's, each body's. */
-    std::vector<std::string>
-    columns(const std::vector<std::string> &bodies) const;
-
     /** Write sweep.gp and draw sweep.png in @p directory; what it did. */
     std::string
     plot(const std::string &directory, unsigned int n_joints) const;

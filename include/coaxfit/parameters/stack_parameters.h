@@ -276,9 +276,23 @@ namespace coaxfit
     }
     /**
      * Fit/Case: which interference of the joints' ISO fits (every joint
-     * the same): min, mean or max.
+     * the same): min, mean or max; all: the study of the bands' corners
+     * (StackCaseStudy).
      */
     std::string fit_case = "mean";
+    /**
+     * `Fit/<inner>-<outer>/Case` of each joint: min, mean or max of its own
+     * ISO fit; empty: Fit/Case's (a Fit/Case = all study sets the corners
+     * of the bands so).
+     */
+    std::vector<std::string> joint_cases;
+
+    /** The case of joint @p k's ISO fit: its own, else Fit/Case. */
+    const std::string &
+    case_of(const unsigned int k) const
+    {
+      return joint_cases[k].empty() ? fit_case : joint_cases[k];
+    }
     /**
      * `Assembly/Order` as given: `inside out`, `outside in` or the joints
      * in the order they are made.

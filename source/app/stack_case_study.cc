@@ -1,0 +1,346 @@
+#include <coaxfit/app/fit_case_study.h>
+#include <coaxfit/app/stack_case_study.h>
+#include <coaxfit/app/stack_fit.h>
+#include <coaxfit/app/stack_study.h>
+#include <coaxfit/base/input_error.h>
+#include <coaxfit/coupling/scene.h>
+#include <coaxfit/io/result_directory.h>
+#include <coaxfit/io/result_writers.h>
+#include <coaxfit/parameters/parameter_checks.h>
+#include <coaxfit/parameters/stack_parameters.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace coaxfit
+{
+  namespace fs = std::filesystem;
+
+  namespace
+  {
+    /** One case: its name and the case of each varied joint. */
+    struct Case
+    {
+      std::string              name;
+      std::vector<std::string> joint_case;
+    };
+
+    /** What became of a case, and each joint's nominal U (mm). */
+    struct Row : StackStudyRun
+    {
+      std::vector<double> U;
+    };
+
+    /**
+     * Whether @p name is a mixed corner's directory (min, mean or max
+     * joined by '-'): an earlier study's, which a new one may replace.
+     */
+    bool
+    corner_name(const std::string &name)
+    {
+      std::istringstream in(name);
+      unsigned int       parts = 0;
+      for (std::string part; std::getline(in, part, '-'); ++parts)
+        if (part != "min" && part != "mean" && part != "max")
+          return false;
+      return parts >= 2 && name.back() != '-';
+    }
+
+    /** The cases: min, mean and max, then the mixed corners. */
+    std::vector<Case>
+    cases_of(const unsigned int J)
+    {
+      std::vector<Case> cases;
+      for (const std::string c : {"min", "mean", "max"})
+        cases.push_back({c, std::vector<std::string>(J, c)});
+      for (unsigned int m = 1; J > 1 && m + 1 < (1u << J); ++m)
+        {
+          Case c;
+          for (unsigned int j = 0; j < J; ++j)
+            {
+              c.joint_case.push_back(((m >> (J - 1 - j)) & 1u) ? "max" : "min");
+              c.name += (j > 0 ? "-" : "") + c.joint_case.back();
+            }
+          cases.push_back(c);
+        }
+      return cases;
+    }
+
+    /** A figure for the tables: 6 digits, or "-" for NaN. */
+    std::string
+    figure(const double x)
+    {
+      if (!std::isfinite(x))
+        return "-";
+      std::ostringstream s;
+      s << std::setprecision(6) << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  StackCaseStudy::StackCaseStudy(
+    const std::string                                      &filename,
+    const std::vector<std::pair<std::string, std::string>> &overrides,
+    const bool                                              verbose,
+    std::ostream                                           &out)
+    : filename(filename)
+    , overrides(overrides)
+    , verbose(verbose)
+    , out(out)
+  {}
+
+
+
+  int
+  StackCaseStudy::run()
+  {
+    const StackParameters     base = read_stack_parameters(filename, overrides);
+    std::vector<unsigned int> varied;
+    for (unsigned int k = 0; k < base.n_joints(); ++k)
+      if (!base.fits[k].iso_fit.empty() && base.joint_cases[k].empty())
+        varied.push_back(k);
+    if (varied.empty())
+      throw InputError(
+        "parameter Fit/Case = all: every joint with an ISO fit gives its own "
+        "Fit/<joint>/Case, so no band is left to run through; allowed: min, "
+        "mean or max, or a joint with an ISO fit and no Case of its own");
+    const std::vector<Case> cases = cases_of(varied.size());
+
+    // The directory: replaced as a whole; directly in it the study's
+    // files, the cases, an earlier single run's files or study's corners.
+    const std::string target  = normalized_directory(base.output_directory());
+    std::set<std::string> top = all_result_file_names();
+    for (const Case &c : cases)
+      top.insert(c.name);
+    for (unsigned int k = 0; k < base.n_joints(); ++k)
+      {
+        top.insert("contact_pressure_" + base.joint_name(k) + ".csv");
+        top.insert("interface_" + base.joint_name(k) + ".vtp");
+      }
+    for (const std::string &b : base.bodies)
+      top.insert(Body::key_of(b) + ".vtu");
+    std::error_code error;
+    if (fs::is_directory(target, error))
+      for (const auto &entry : fs::directory_iterator(target, error))
+        if (entry.is_directory() && corner_name(entry.path().filename()))
+          top.insert(entry.path().filename().string());
+    ResultDirectory directory(target, all_result_file_names(), top);
+
+    std::vector<Row> rows(cases.size());
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      {
+        const Case &c    = cases[i];
+        Row        &row  = rows[i];
+        auto        with = overrides;
+        with.emplace_back("Fit/Case", "mean");
+        for (unsigned int j = 0; j < varied.size(); ++j)
+          with.emplace_back("Fit/" + base.joint_name(varied[j]) + "/Case",
+                            c.joint_case[j]);
+        // parameters.prm of the case names where it ends up.
+        with.emplace_back("Output/Directory", target + "/" + c.name);
+        static_cast<StackStudyRun &>(row) = run_stack_study_case(
+          [&]() {
+            StackParameters p = read_stack_parameters(filename, with);
+            p.case_name       = base.case_name + "_" + c.name;
+            for (const JointFit &f : p.fits)
+              row.U.push_back(f.nominal_interference);
+            return p;
+          },
+          directory.staging_path() + "/" + c.name,
+          verbose,
+          out);
+      }
+
+    // The verdict over every case: each failed criterion (its text before
+    // the figures, which the table and each case's report give) with the
+    // cases that fail it; a case without a verdict fails the study.
+    std::vector<std::string>                        criteria;
+    std::map<std::string, std::vector<std::string>> failing;
+    std::vector<std::string>                        unjudged;
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      {
+        if (!rows[i].written || rows[i].exit_code != 0)
+          unjudged.push_back(cases[i].name);
+        for (const std::string &failed : rows[i].failed)
+          {
+            const std::string criterion = failed.substr(0, failed.find(": "));
+            if (failing.count(criterion) == 0)
+              criteria.push_back(criterion);
+            failing[criterion].push_back(cases[i].name);
+          }
+      }
+    std::string case_list;
+    for (const Case &c : cases)
+      case_list += (case_list.empty() ? "" : ", ") + c.name;
+    std::string verdict = "Verdict (cases " + case_list + "): ";
+    if (criteria.empty() && unjudged.empty())
+      verdict += "OK";
+    else
+      {
+        verdict += "FAILED: ";
+        std::string reasons;
+        for (const std::string &criterion : criteria)
+          {
+            std::string in;
+            for (const std::string &name : failing[criterion])
+              in += (in.empty() ? "" : ", ") + name;
+            reasons += (reasons.empty() ? "" : "; ") + criterion + " in "
+                       + (failing[criterion].size() == cases.size() ?
+                            std::string("every case") :
+                            in);
+          }
+        for (const std::string &name : unjudged)
+          reasons += (reasons.empty() ? "" : "; ") + std::string("case ") + name
+                     + " without a converged result";
+        verdict += reasons;
+      }
+
+    // The table: a row per figure, a column per case.
+    const std::vector<std::string> names = stack_column_names(base.bodies);
+    std::vector<std::pair<std::string, std::vector<std::string>>> table;
+    const auto add = [&](const std::string &label, const auto &cell) {
+      std::vector<std::string> cells;
+      for (const Row &row : rows)
+        cells.push_back(cell(row));
+      table.emplace_back(label, cells);
+    };
+    add("exit code", [](const Row &r) { return std::to_string(r.exit_code); });
+    add("steps", [](const Row &r) {
+      return r.written ? std::to_string(r.steps) : std::string("-");
+    });
+    for (unsigned int k = 0; k < base.n_joints(); ++k)
+      add(base.joint_name(k) + "_U_mm", [k](const Row &r) {
+        return k < r.U.size() ? figure(r.U[k]) : std::string("-");
+      });
+    for (unsigned int c = 0; c < names.size(); ++c)
+      add(names[c], [c](const Row &r) {
+        return c < r.values.size() ? figure(r.values[c]) : std::string("-");
+      });
+    add("verdict", [](const Row &r) {
+      return r.verdict.empty() ? std::string("-") : r.verdict;
+    });
+
+    std::string fits;
+    for (const unsigned int k : varied)
+      fits += (fits.empty() ? "" : ", ") + base.joint_name(k) + " "
+              + base.fits[k].iso_fit;
+    std::size_t width = 6;
+    for (const auto &[label, cells] : table)
+      width = std::max(width, label.size());
+    std::size_t column = 10;
+    for (const Case &c : cases)
+      column = std::max(column, c.name.size() + 2);
+    std::ostringstream console;
+    console << "\ncoaxfit: Fit/Case = all of " << filename << ": "
+            << cases.size() << " cases of the ISO fits " << fits
+            << " (the joints' cases in this order)\n"
+            << "  " << std::left << std::setw(width) << "figure" << std::right;
+    for (const Case &c : cases)
+      console << std::setw(column) << c.name;
+    console << '\n';
+    for (const auto &[label, cells] : table)
+      {
+        console << "  " << std::left << std::setw(width) << label << std::right;
+        for (const std::string &cell : cells)
+          console << std::setw(column) << cell;
+        console << '\n';
+      }
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      if (!rows[i].error.empty())
+        console << "  case " << cases[i].name << ": " << rows[i].error << '\n';
+    console << verdict << '\n';
+    out << console.str();
+
+    bool      nothing = true;
+    const int code
+      = stack_study_exit_code(std::vector<StackStudyRun>(rows.begin(),
+                                                         rows.end()),
+                              "case of the study",
+                              target,
+                              out,
+                              nothing);
+    if (nothing)
+      return code;
+
+    // fit_cases.csv: a row per case.
+    const std::string csv_name = directory.staging_path() + "/fit_cases.csv";
+    std::ofstream     csv      = open_result_file(csv_name);
+    csv << std::setprecision(10) << "case,exit_code,verdict,steps";
+    for (unsigned int k = 0; k < base.n_joints(); ++k)
+      csv << ',' << base.joint_name(k) << "_U_mm";
+    for (const std::string &n : names)
+      csv << ',' << n;
+    csv << ",error\n";
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      {
+        const Row &row = rows[i];
+        csv << cases[i].name << ',' << row.exit_code << ',' << row.verdict
+            << ',';
+        if (row.written)
+          csv << row.steps;
+        for (unsigned int k = 0; k < base.n_joints(); ++k)
+          {
+            csv << ',';
+            if (k < row.U.size())
+              csv << row.U[k];
+          }
+        for (unsigned int c = 0; c < names.size(); ++c)
+          {
+            csv << ',';
+            if (c < row.values.size() && std::isfinite(row.values[c]))
+              csv << row.values[c];
+          }
+        csv << ',' << csv_field(row.error) << '\n';
+      }
+    close_result_file(csv, csv_name);
+
+    // report.md: the verdict, the table, the cases' reports.
+    const std::string report_name = directory.staging_path() + "/report.md";
+    std::ofstream     md          = open_result_file(report_name);
+    md << "# coaxfit report: " << base.case_name
+       << ", Fit/Case = all: the ISO fits " << fits << ", " << cases.size()
+       << " cases\n\n## Verdict\n\n"
+       << verdict << "\n\n## The cases\n\n"
+       << "Each case has the joints " << fits
+       << " at their smallest (min) or largest (max) interference, or all "
+          "at their means; a mixed corner's name gives their cases in this "
+          "order. The joints interact, so a body's stress may be largest "
+          "in a mixed corner.\n\n| figure |";
+    for (const Case &c : cases)
+      md << ' ' << c.name << " |";
+    md << "\n|---|";
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      md << "---:|";
+    md << '\n';
+    for (const auto &[label, cells] : table)
+      {
+        md << "| " << label << " |";
+        for (const std::string &cell : cells)
+          md << ' ' << cell << " |";
+        md << '\n';
+      }
+    md << "\nEach case's report:";
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      if (rows[i].written)
+        md << " [" << cases[i].name << "](" << cases[i].name << "/report.md)";
+    md << '\n';
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      if (!rows[i].error.empty())
+        md << "\nCase " << cases[i].name << ": " << rows[i].error << '\n';
+    close_result_file(md, report_name);
+
+    directory.commit(out);
+    out << "  results in " << target
+        << " (fit_cases.csv, report.md, one subdirectory per case)"
+        << std::endl;
+    return code;
+  }
+} // namespace coaxfit

@@ -31,7 +31,7 @@
 //    1 mm beside one of 20 mm gives a caution (its mean is its ends').
 //    prm/examples/two_seats.prm's contact line for ParaView is a polyline
 //    per seat.
-//    Its groove's least radial gap (summary.json joints[].grooves) against
+//    Its groove's least radial gap (summary.json joints[].reliefs) against
 //    the displacements ParaView reads from the VTU files there.
 // 5. A groove shallower than the radial interference (its bottom would
 //    touch; the shaft under it can rise at most by the interference and
@@ -39,7 +39,10 @@
 //    line naming the joint's Fit.
 // 6. A long shallow groove that a hot shaft closes in operation: exit 1,
 //    one line naming the joint's Fit and the least gap; open when
-//    assembled.
+//    assembled; at 100 C open, both states' gaps written; in a batch the
+//    refused case's row has no verdict and no figures.
+// 7. End reliefs (the hub's bore widened beyond the joint's end): too
+//    shallow refused, deeper open with its gap, a chamfer accepted.
 
 #include "run_executable.h"
 #include "run_summary.h"
@@ -298,43 +301,11 @@ main()
     // ProbeLocation on hub.vtu at r 27: 0.0144182 mm; on shaft.vtu at r 25:
     // 0.0216687 less the 0.025 mm of interference its displacement_mm
     // holds, -0.0033313 mm): 1.992749 mm.
-    const nlohmann::json g = read_summary("seats")["joints"][0]["grooves"][0];
+    const nlohmann::json g = read_summary("seats")["joints"][0]["reliefs"][0];
     std::cout << "  groove z " << g["z_from"].get<double>() << " to "
               << g["z_to"].get<double>() << ": least radial gap "
               << agreement(g["least_gap"], 1.992749, 1e-6) << " at z "
               << g["least_gap_z"].get<double>() << '\n';
-  }
-
-  std::cout << "\n6. A groove that loads of operation close\n";
-  // A groove 40 mm long and 0.05 mm deep (radially) between seats of
-  // 5 mm: 0.025 mm of interference leave it open when assembled; with the
-  // shaft at 200 C (the hub at 20 C) the shaft under it grows freely by
-  // about alpha dT r = 0.05 mm and closes it: exit 1, nothing written.
-  {
-    const std::string long_groove
-      = "-25, 50; -20, 50; -20, 50.1; 20, 50.1; 20, 50; 25, 50; 25, 100; "
-        "-25, 100; -25, 50";
-    std::ofstream("long_groove.prm") << groove_prm(long_groove);
-    std::filesystem::remove_all("long_groove");
-    RunResult r = run_coaxfit("long_groove", quiet + "long_groove.prm");
-    const nlohmann::json g
-      = read_summary("long_groove")["joints"][0]["grooves"][0];
-    std::cout << "assembled: exit " << r.exit_code << ", least radial gap "
-              << std::setprecision(4) << g["least_gap"].get<double>()
-              << std::setprecision(6) << " mm at z "
-              << g["least_gap_z"].get<double>() << '\n';
-    std::ofstream("hot_shaft.prm")
-      << groove_prm(long_groove)
-      << "subsection Material\n  subsection Shaft\n"
-         "    set Thermal expansion = 11.5e-6\n  end\n  subsection Hub\n"
-         "    set Thermal expansion = 11.5e-6\n  end\nend\n"
-         "subsection Operation\n  set Shaft temperature = 200\nend\n";
-    std::filesystem::remove_all("hot_shaft");
-    r = run_coaxfit("hot_shaft", quiet + "hot_shaft.prm");
-    std::cout << "the shaft at 200 C: exit " << r.exit_code << ", "
-              << (std::filesystem::exists("hot_shaft") ? "written" :
-                                                         "nothing written")
-              << "\n  " << gist(r.message, 70) << " (" << r.lines << " line)\n";
   }
 
   std::cout << "\n5. Bad input\n";
@@ -379,5 +350,125 @@ main()
               << r.exit_code << "\n  " << gist(r.message, 70) << " (" << r.lines
               << " line)\n";
   }
+  std::cout << "\n6. A groove that loads of operation close\n";
+  // A groove 40 mm long and 0.05 mm deep (radially) between seats of
+  // 5 mm: 0.025 mm of interference leave it open when assembled; with the
+  // shaft at 200 C (the hub at 20 C) the shaft under it grows freely by
+  // about alpha dT r = 0.05 mm and closes it: exit 1, nothing written.
+  {
+    const std::string long_groove
+      = "-25, 50; -20, 50; -20, 50.1; 20, 50.1; 20, 50; 25, 50; 25, 100; "
+        "-25, 100; -25, 50";
+    std::ofstream("long_groove.prm") << groove_prm(long_groove);
+    std::filesystem::remove_all("long_groove");
+    RunResult r = run_coaxfit("long_groove", quiet + "long_groove.prm");
+    const nlohmann::json g
+      = read_summary("long_groove")["joints"][0]["reliefs"][0];
+    std::cout << "assembled: exit " << r.exit_code << ", least radial gap "
+              << std::setprecision(4) << g["least_gap"].get<double>()
+              << std::setprecision(6) << " mm at z "
+              << g["least_gap_z"].get<double>() << '\n';
+    std::ofstream("hot_shaft.prm")
+      << groove_prm(long_groove)
+      << "subsection Material\n  subsection Shaft\n"
+         "    set Thermal expansion = 11.5e-6\n  end\n  subsection Hub\n"
+         "    set Thermal expansion = 11.5e-6\n  end\nend\n"
+         "subsection Operation\n  set Shaft temperature = 200\nend\n";
+    std::filesystem::remove_all("hot_shaft");
+    r = run_coaxfit("hot_shaft", quiet + "hot_shaft.prm");
+    std::cout << "the shaft at 200 C: exit " << r.exit_code << ", "
+              << (std::filesystem::exists("hot_shaft") ? "written" :
+                                                         "nothing written")
+              << "\n  " << gist(r.message, 70) << " (" << r.lines << " line)\n";
+    // At 100 C it stays open: in operation 80 K x 2.26e-4 mm/K less (the
+    // gap is linear in the temperature: 0.03035, 0.02357, 0.01227 mm at
+    // 20, 50, 100 C), when assembled as without loads.
+    std::filesystem::remove_all("warm_shaft");
+    r                      = run_coaxfit("warm_shaft",
+                    quiet
+                      + "--set 'Operation/Shaft temperature=100' "
+                                             "hot_shaft.prm");
+    const nlohmann::json w = read_summary("warm_shaft")["joints"][0];
+    std::cout << "the shaft at 100 C: exit " << r.exit_code
+              << ", least radial gap in operation " << std::setprecision(4)
+              << w["reliefs"][0]["least_gap"].get<double>()
+              << " mm, when assembled "
+              << agreement(w["assembly"]["reliefs"][0]["least_gap"],
+                           g["least_gap"],
+                           1e-9)
+              << " with the run without loads\n"
+              << std::setprecision(6);
+    // In a batch, the refused case's row has no verdict and no figures.
+    std::ofstream("batch_long.prm")
+      << groove_prm(long_groove)
+      << "subsection Output\n  set Directory = batch_long\nend\n";
+    std::ofstream("batch_hot.prm")
+      << groove_prm(long_groove)
+      << "subsection Operation\n  set Shaft temperature = 200\nend\n"
+         "subsection Material\n  subsection Shaft\n"
+         "    set Thermal expansion = 11.5e-6\n  end\n  subsection Hub\n"
+         "    set Thermal expansion = 11.5e-6\n  end\nend\n"
+         "subsection Output\n  set Directory = batch_hot\nend\n";
+    r = run_command("timeout 60 " + std::string(coaxfit_executable) + quiet
+                    + "--table batch.csv "
+                      "batch_long.prm batch_hot.prm 2>/dev/null >/dev/null");
+    std::ifstream in("batch.csv");
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("batch_hot.prm", 0) == 0)
+        {
+          std::istringstream       f(line);
+          std::vector<std::string> fields;
+          for (std::string field; std::getline(f, field, ',');)
+            fields.push_back(field);
+          std::cout << "in a batch: exit " << r.exit_code << ", its row: exit "
+                    << fields[1] << ", " << fields[2] << ", verdict '"
+                    << fields[3] << "', joint '" << fields[6]
+                    << "', mean pressure '" << fields[9] << "'\n";
+        }
+  }
+
+  std::cout << "\n7. End reliefs: a bore widened beyond the joint's end\n";
+  // The hub's bore D 50 from z -25 to 10, then widened to the hub's end:
+  // by 0.01 mm (radially), less than the 0.025 mm of interference: the
+  // shaft would overlap it, refused; by 0.1 mm: open, its least gap
+  // between the clearance less the interference and the clearance (the
+  // hub's bore beyond the seat widens by less than the interference
+  // relative to the shaft); a 45 degree chamfer 0.2 mm deep at the bore's
+  // end: judged over its half away from the joint, open.
+  for (const auto &[what, hub] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"widened by 0.01 mm",
+          "-25, 50; 10, 50; 10, 50.02; 25, 50.02; 25, 100; -25, 100; -25, 50"},
+         {"widened by 0.1 mm",
+          "-25, 50; 10, 50; 10, 50.2; 25, 50.2; 25, 100; -25, 100; -25, 50"},
+         {"a chamfer 0.2 mm deep",
+          "-25, 50; 24.8, 50; 25, 50.4; 25, 100; -25, 100; -25, 50"}})
+    {
+      std::ofstream("end.prm") << groove_prm(hub);
+      std::filesystem::remove_all("end");
+      const RunResult r = run_coaxfit("end", quiet + "end.prm");
+      std::cout << what << ": exit " << r.exit_code;
+      if (r.exit_code == 0)
+        {
+          const nlohmann::json e
+            = read_summary("end")["joints"][0]["reliefs"][0];
+          const double c = e["clearance"], gap = e["least_gap"];
+          std::cout << ", " << e["kind"].get<std::string>() << " relief z "
+                    << e["z_from"].get<double>() << " to "
+                    << e["z_to"].get<double>() << ", clearance " << c
+                    << " mm, least gap " << std::setprecision(4) << gap
+                    << std::setprecision(6) << " mm at z "
+                    << e["least_gap_z"].get<double>()
+                    << ", between c - 0.025 and c: "
+                    << (gap > c - 0.025 && gap < c ? "yes" : "NO") << '\n';
+        }
+      else
+        std::cout << ", "
+                  << (std::filesystem::exists("end") ? "written" :
+                                                       "nothing written")
+                  << "\n  " << gist(r.message, 70) << " (" << r.lines
+                  << " line)\n";
+    }
+
   return 0;
 }

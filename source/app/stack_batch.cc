@@ -1,6 +1,7 @@
 #include <coaxfit/app/process_pool.h>
 #include <coaxfit/app/run_guard.h>
 #include <coaxfit/app/stack_batch.h>
+#include <coaxfit/base/input_error.h>
 #include <coaxfit/io/result_writers.h>
 
 #include <chrono>
@@ -151,6 +152,12 @@ namespace coaxfit
                 try
                   {
                     code = fit.run(case_out, verbose);
+                  }
+                catch (const InputError &)
+                  {
+                    // Refused, also after the solve (a relief groove the
+                    // bodies close): its figures are no result.
+                    throw;
                   }
                 catch (...)
                   {

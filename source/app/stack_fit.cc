@@ -781,7 +781,7 @@ namespace coaxfit
               }
           f.pieces.push_back({{lo, hi, force / weight}});
         }
-    f.grooves = groove_gaps(k, state_fields);
+    f.reliefs = relief_gaps(k, state_fields);
     // The gap of each point from the bodies' own displacements (the loads'
     // answers included).
     const std::vector<double> gaps
@@ -869,25 +869,30 @@ namespace coaxfit
 
 
 
-  std::vector<std::array<double, 5>>
-  StackFit::groove_gaps(const unsigned int                 k,
+  std::vector<JointFigures::ReliefGap>
+  StackFit::relief_gaps(const unsigned int                 k,
                         const std::vector<Vector<double>> &state_fields) const
   {
-    std::vector<std::array<double, 5>> result;
+    std::vector<JointFigures::ReliefGap> result;
     if (!parameters.sections)
       return result;
     const StackSections &sections = *parameters.sections;
     const StackJoint    &joint    = stack_joints[k];
     const double         offset   = sections.drawing_offset();
-    for (const auto &[from, to, clearance] : sections.joint_grooves(k))
+    for (const JointRelief &relief : sections.joint_reliefs(k))
       {
-        std::array<double, 5> groove{
-          {from, to, clearance, std::numeric_limits<double>::max(), from}};
-        // 41 planes over the inner four fifths, as the drawn clearance.
+        JointFigures::ReliefGap g{relief,
+                                  std::numeric_limits<double>::max(),
+                                  relief.judged_from};
+        // 41 planes where it is judged, as its drawn clearance.
         for (unsigned int s = 0; s <= 40; ++s)
           {
-            const double z = from + (0.1 + 0.8 * s / 40.) * (to - from);
-            const auto [outside, bore] = sections.groove_radii(k, z);
+            const double z
+              = relief.judged_from
+                + s / 40. * (relief.judged_to - relief.judged_from);
+            const auto [outside, bore] = sections.relief_radii(k, z);
+            if (outside < 0. || !std::isfinite(bore))
+              continue;
             // A half model holds the mirror image of z < 0.
             const double z_model
               = joint.whole ? z - offset : std::abs(z - offset);
@@ -898,13 +903,13 @@ namespace coaxfit
                                - displacement_at(*bodies[k],
                                                  state_fields[k],
                                                  Point<2>(outside, z_model))[0];
-            if (gap < groove[3])
+            if (gap < g.gap)
               {
-                groove[3] = gap;
-                groove[4] = z;
+                g.gap = gap;
+                g.z   = z;
               }
           }
-        result.push_back(groove);
+        result.push_back(g);
       }
     return result;
   }
@@ -1397,7 +1402,7 @@ namespace coaxfit
           }
       }
 
-    check_grooves();
+    check_reliefs();
     surfaces_out.clear();
     for (const std::string &name : parameters.report_surfaces)
       surfaces_out.push_back(surface(name));
@@ -1408,25 +1413,27 @@ namespace coaxfit
 
 
   void
-  StackFit::check_grooves() const
+  StackFit::check_reliefs() const
   {
     for (const bool operation : {false, true})
       for (const JointFigures &f : operation ? joints_out : joints_assembly)
-        for (const auto &[from, to, clearance, gap, z] : f.grooves)
-          if (!(gap > 0.))
+        for (const JointFigures::ReliefGap &g : f.reliefs)
+          if (!(g.gap > 0.))
             throw InputError(
-              "parameter Fit/" + f.name
-              + ": the joint's relief groove from z = " + number(from, 6)
-              + " to " + number(to, 6) + " closes "
+              "parameter Fit/" + f.name + ": the joint's " + g.relief.name()
+              + " from z = " + number(g.relief.from, 6) + " to "
+              + number(g.relief.to, 6) + " closes "
               + (operation && has_loads() ? "under the loads of Operation" :
                                             "in the state of assembly")
-              + ": its least radial gap is " + number(gap, 4)
-              + " mm at z = " + number(z, 6) + " (the drawn clearance "
-              + number(clearance, 6) + " mm less the radial interference "
+              + ": its least radial gap is " + number(g.gap, 4)
+              + " mm at z = " + number(g.z, 6) + " (the drawn clearance "
+              + number(g.relief.clearance, 6)
+              + " mm less the radial interference "
               + number(f.effective_interference / 2., 6)
               + " mm and what the bodies' displacements take), so its bottom "
-                "would touch, which is not modelled; allowed: a groove that "
-                "stays open (deeper, or a smaller interference or loads)");
+                "would touch, which is not modelled; allowed: a relief that "
+                "stays open (deeper, or smaller interferences of the stack's "
+                "joints, or other loads)");
   }
 
 
@@ -1621,10 +1628,22 @@ namespace coaxfit
                     "is not inside one)" :
                     ", the joint's middle")
               << '\n';
-          for (const auto &[from, to, clearance, gap, z] : f.grooves)
-            out << "  " << f.name << ": relief groove z " << from << " to "
-                << to << " open, least radial gap " << gap << " mm at z " << z
-                << " (drawn clearance " << clearance << " mm)\n";
+        }
+    // Each relief's least gap (in both states with loads).
+    for (const JointFigures &f : joints_out)
+      for (unsigned int r = 0; r < f.reliefs.size(); ++r)
+        {
+          const JointFigures::ReliefGap &g = f.reliefs[r];
+          out << "  " << f.name << ": " << g.relief.name() << " z "
+              << g.relief.from << " to " << g.relief.to
+              << " open, least radial gap " << g.gap << " mm at z " << g.z;
+          if (has_loads())
+            {
+              const auto &a = joints_assembly[&f - &joints_out[0]].reliefs[r];
+              out << " in operation, " << a.gap << " mm at z " << a.z
+                  << " when assembled";
+            }
+          out << " (drawn clearance " << g.relief.clearance << " mm)\n";
         }
     for (const JointFigures &f : joints_out)
       if (!f.closed)

@@ -42,6 +42,27 @@ namespace coaxfit
     }
 
     /**
+     * The reliefs of a joint's figures @p f: each one's kind (groove, end),
+     * drawing z from and to, its drawn clearance and the least radial gap
+     * left (mm).
+     */
+    Json
+    reliefs_json(const JointFigures &f)
+    {
+      Json reliefs = Json::array();
+      for (const JointFigures::ReliefGap &g : f.reliefs)
+        reliefs.push_back({{"kind", g.relief.groove ? "groove" : "end"},
+                           {"z_from", g.relief.from},
+                           {"z_to", g.relief.to},
+                           {"clearance", g.relief.clearance},
+                           {"least_gap", number_or_null(g.gap)},
+                           {"least_gap_z", g.z}});
+      return reliefs;
+    }
+
+
+
+    /**
      * The figures of a joint; its safety against slip with @p slip (a
      * required torque given).
      */
@@ -64,14 +85,9 @@ namespace coaxfit
                                    {"z_to", to},
                                    {"length", to - from},
                                    {"mean_pressure", number_or_null(mean)}});
-          j["grooves"] = Json::array();
-          for (const auto &[from, to, clearance, gap, z] : f.grooves)
-            j["grooves"].push_back({{"z_from", from},
-                                    {"z_to", to},
-                                    {"clearance", clearance},
-                                    {"least_gap", number_or_null(gap)},
-                                    {"least_gap_z", z}});
         }
+      if (!f.reliefs.empty())
+        j["reliefs"] = reliefs_json(f);
       j["contact"] = contact_json(f);
       j["alone"]   = {{"pressure",
                        {{"at_mid_plane", number_or_null(f.alone_p_mid)},
@@ -362,6 +378,8 @@ namespace coaxfit
             Json                assembly;
             assembly["pressure"] = pressure_json(a);
             assembly["contact"]  = contact_json(a);
+            if (!a.reliefs.empty())
+              assembly["reliefs"] = reliefs_json(a);
             if (a.friction_coefficient > 0.)
               {
                 assembly["torque_capacity"] = number_or_null(a.torque_capacity);

@@ -219,14 +219,26 @@ namespace coaxfit
           md << ". Its p(0) and the mid-plane figures of "
              << (k == 0 ? p.bodies[0] + " and " : std::string())
              << p.bodies[k + 1] << " are taken at z "
-             << design_figure(f.mid_plane_z) << ".";
-          for (const auto &[from, to, clearance, gap, z] : f.grooves)
-            md << " The relief groove from z " << design_figure(from) << " to "
-               << design_figure(to) << " (drawn clearance "
-               << design_figure(clearance)
-               << " mm) stays open: its least radial gap is "
-               << design_figure(gap) << " mm at z " << design_figure(z) << ".";
-          md << "\n";
+             << design_figure(f.mid_plane_z) << ".\n";
+        }
+    // Each relief: open, by how much.
+    for (unsigned int k = 0; k < joints_out.size(); ++k)
+      for (unsigned int r = 0; r < joints_out[k].reliefs.size(); ++r)
+        {
+          const JointFigures::ReliefGap &g = joints_out[k].reliefs[r];
+          md << "\n"
+             << joints_out[k].name << ": the " << g.relief.name() << " from z "
+             << design_figure(g.relief.from) << " to "
+             << design_figure(g.relief.to) << " (drawn clearance "
+             << design_figure(g.relief.clearance)
+             << " mm) stays open: its least radial gap is "
+             << design_figure(g.gap) << " mm at z " << design_figure(g.z);
+          if (!joints_assembly.empty())
+            md << " in operation, "
+               << design_figure(joints_assembly[k].reliefs[r].gap)
+               << " mm at z " << design_figure(joints_assembly[k].reliefs[r].z)
+               << " when assembled";
+          md << ".\n";
         }
     bool friction = false;
     for (const JointFigures &f : joints_out)

@@ -191,7 +191,7 @@ namespace coaxfit
                   > parameters.fits[k].smoothing_loss)
                 {
                   if (parameters.sections
-                      && parameters.sections->closing_groove(
+                      && parameters.sections->closing_relief(
                         k, 1e-3 * f.max_interference()))
                     ++closing;
                   else
@@ -201,7 +201,7 @@ namespace coaxfit
               notes.push_back(
                 std::to_string(closing) + " fits of " + parameters.joint_name(k)
                 + " were left out: their largest interference would close "
-                  "its relief groove, which is not modelled");
+                  "a relief of its sections, which is not modelled");
           }
         std::stable_sort(fits.begin(), fits.end(), rank);
         n_fits.push_back(fits.size());

@@ -13,6 +13,24 @@
 
 namespace coaxfit
 {
+  namespace
+  {
+    /** The lowest and highest z of an outline's corners (mm). */
+    std::pair<double, double>
+    z_range(const SectionOutline &outline)
+    {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const OutlineEdge &e : outline.edges())
+        for (const double t : {0., 1.})
+          {
+            lo = std::min(lo, e.point_at(t)[1]);
+            hi = std::max(hi, e.point_at(t)[1]);
+          }
+      return {lo, hi};
+    }
+  } // namespace
+
+
   StackSections::StackSections(const std::vector<std::string> &entries,
                                const std::vector<std::string> &texts)
   {
@@ -127,23 +145,43 @@ namespace coaxfit
             z_hi[k] = std::max(z_hi[k], hi);
           }
         std::sort(drawn_pieces[k].begin(), drawn_pieces[k].end());
-        // The least clearance across each groove over its inner four
-        // fifths (its flanks may slope onto the seats): the outer
-        // section's bore less the inner section's outside, at 200 planes.
-        grooves.emplace_back();
+        // The reliefs: each groove between pieces, and beyond the joint's
+        // ends the stretches where both sections go on; each one's least
+        // clearance where it is judged (JointRelief): the outer section's
+        // bore less the inner section's outside at 201 planes, a plane
+        // where either section has no surface left out.
+        reliefs.emplace_back();
+        const auto relief = [&](const double a,
+                                const double b,
+                                const double from,
+                                const double to,
+                                const bool   groove) {
+          JointRelief r{
+            a, b, from, to, std::numeric_limits<double>::infinity(), groove};
+          for (unsigned int s = 0; s <= 200; ++s)
+            {
+              const auto [outside, bore]
+                = relief_radii(k, from + s / 200. * (to - from));
+              if (outside >= 0. && std::isfinite(bore))
+                r.clearance = std::min(r.clearance, bore - outside);
+            }
+          if (std::isfinite(r.clearance))
+            reliefs[k].push_back(r);
+        };
+        const auto [in_lo, in_hi]   = z_range(*drawn[k]);
+        const auto [out_lo, out_hi] = z_range(*drawn[k + 1]);
+        const double below          = std::max(in_lo, out_lo),
+                     above          = std::min(in_hi, out_hi);
+        if (const double L = z_lo[k] - below; L > tol)
+          relief(below, z_lo[k], below + 0.05 * L, below + 0.5 * L, false);
         for (unsigned int i = 0; i + 1 < drawn_pieces[k].size(); ++i)
           {
-            const double a   = drawn_pieces[k][i].second,
-                         b   = drawn_pieces[k][i + 1].first;
-            double clearance = std::numeric_limits<double>::infinity();
-            for (unsigned int s = 0; s <= 200; ++s)
-              {
-                const auto [outside, bore]
-                  = groove_radii(k, a + (0.1 + 0.8 * s / 200.) * (b - a));
-                clearance = std::min(clearance, bore - outside);
-              }
-            grooves[k].push_back({{a, b, clearance}});
+            const double a = drawn_pieces[k][i].second,
+                         b = drawn_pieces[k][i + 1].first;
+            relief(a, b, a + 0.1 * (b - a), b - 0.1 * (b - a), true);
           }
+        if (const double L = above - z_hi[k]; L > tol)
+          relief(z_hi[k], above, z_hi[k] + 0.5 * L, above - 0.05 * L, false);
         shoulders.push_back(
           shoulder_beside(faces, z_lo[k], z_hi[k], tol, both));
         half_length.push_back(0.5 * (z_hi[k] - z_lo[k]));
@@ -409,16 +447,18 @@ namespace coaxfit
 
 
   std::pair<double, double>
-  StackSections::groove_radii(const unsigned int k, const double z) const
+  StackSections::relief_radii(const unsigned int k, const double z) const
   {
-    const double tol  = 1e-6 * extent();
-    double       bore = std::numeric_limits<double>::infinity(), outside = 0.;
-    for (const double r : radii_at(*drawn[k + 1], z))
-      if (r >= radius[k] - tol)
-        bore = std::min(bore, r);
+    // The inner section lies inside the outer one at every plane: its
+    // outermost surface faces the outer section's innermost one above it.
+    const double tol     = 1e-6 * extent();
+    double       outside = -1.;
     for (const double r : radii_at(*drawn[k], z))
-      if (r <= radius[k] + tol)
-        outside = std::max(outside, r);
+      outside = std::max(outside, r);
+    double bore = std::numeric_limits<double>::infinity();
+    for (const double r : radii_at(*drawn[k + 1], z))
+      if (r >= outside - tol)
+        bore = std::min(bore, r);
     return {outside, bore};
   }
 

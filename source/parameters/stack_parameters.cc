@@ -1689,23 +1689,22 @@ namespace coaxfit
                            "interference)");
       }
 
-    // A relief groove shallower than the interference would touch at its
+    // A relief shallower than the interference would touch at its
     // bottom, which is not modelled (a joint whose fit is chosen: the
     // selection leaves out the fits that would close it).
     for (unsigned int k = 0; k < p.fits.size() && p.sections; ++k)
-      if (const auto groove
-          = p.sections->closing_groove(k, p.fits[k].largest_interference);
-          groove && !p.selected[k])
+      if (const auto relief
+          = p.sections->closing_relief(k, p.fits[k].largest_interference);
+          relief && !p.selected[k])
         throw InputError(
-          "parameter Fit/" + p.joint_name(k)
-          + ": the joint's relief groove from z = " + number((*groove)[0], 6)
-          + " to " + number((*groove)[1], 6) + " leaves "
-          + number((*groove)[2], 6)
+          "parameter Fit/" + p.joint_name(k) + ": the joint's " + relief->name()
+          + " from z = " + number(relief->from, 6) + " to "
+          + number(relief->to, 6) + " leaves " + number(relief->clearance, 6)
           + " mm between the sections, no more than the largest radial "
             "interference "
           + number(p.fits[k].largest_interference / 2., 6)
           + " mm, so its bottom would touch, which is not modelled; "
-            "allowed: a groove deeper than the radial interference");
+            "allowed: a relief deeper than the radial interference");
     // The case name: the file's base name.
     std::string base = filename.substr(filename.find_last_of('/') + 1);
     if (base.size() > 4 && base.substr(base.size() - 4) == ".prm")

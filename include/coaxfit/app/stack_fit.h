@@ -43,19 +43,24 @@ namespace coaxfit
      */
     std::vector<std::array<double, 3>> pieces;
     /**
-     * The relief grooves between the pieces (empty for one piece): each
-     * one's drawing z from and to, its drawn radial clearance, the least
-     * radial gap left across it in this state and the drawing z of that
-     * least gap (mm). The gap is the clearance less the joint's whole
-     * radial interference (as if the groove's surface carried it) plus
-     * the outer body's radial displacement less the inner one's, over the
-     * groove's inner four fifths; no more than 0 would touch, which is not
-     * modelled (StackFit::postprocess() refuses it).
+     * The reliefs of the joint (StackSections::joint_reliefs(): grooves
+     * between its pieces, end reliefs beyond its ends), each with the
+     * least radial gap left across it in this state and the drawing z of
+     * that gap (mm). The gap is the drawn clearance less the joint's whole
+     * radial interference (as if the relief's surface carried it) plus
+     * the outer body's radial displacement less the inner one's, where the
+     * relief is judged; no more than 0 would touch, which is not modelled
+     * (StackFit::postprocess() refuses it).
      */
-    std::vector<std::array<double, 5>> grooves;
-    bool                               closed; ///< every point in contact
-    double       contact_length;               ///< mm, full length in contact
-    unsigned int separated_points;
+    struct ReliefGap
+    {
+      JointRelief relief;
+      double      gap, z;
+    };
+    std::vector<ReliefGap> reliefs;
+    bool                   closed;         ///< every point in contact
+    double                 contact_length; ///< mm, full length in contact
+    unsigned int           separated_points;
     /**
      * The diametral gap 2 (u_outer - u_inner - d) left where the joint is
      * open, smallest and largest over its points (mm; 0 where closed): a
@@ -408,21 +413,20 @@ namespace coaxfit
      * (u_outer - u_inner - interference); about 0 where in contact.
      */
     /**
-     * The relief grooves of joint @p k with the least radial gap the
-     * bodies' fields @p state_fields leave across each
-     * (JointFigures::grooves).
+     * The reliefs of joint @p k with the least radial gap the bodies'
+     * fields @p state_fields leave across each (JointFigures::reliefs).
      */
-    std::vector<std::array<double, 5>>
-    groove_gaps(unsigned int                       k,
+    std::vector<JointFigures::ReliefGap>
+    relief_gaps(unsigned int                       k,
                 const std::vector<Vector<double>> &state_fields) const;
 
     /**
-     * Refuse (InputError naming Fit/<joint>) a relief groove that the
-     * bodies close in the state of assembly or in operation: its least gap
-     * no more than 0 (its bottom would touch, which is not modelled).
+     * Refuse (InputError naming Fit/<joint>) a relief that the bodies
+     * close in the state of assembly or in operation: its least gap no
+     * more than 0 (its bottom would touch, which is not modelled).
      */
     void
-    check_grooves() const;
+    check_reliefs() const;
 
     std::vector<double>
     joint_gaps(unsigned int                       k,

@@ -20,6 +20,34 @@ namespace coaxfit
   using namespace dealii;
 
   /**
+   * A relief beside a joint of a stack: a stretch where the two sections
+   * face each other with a clearance instead of touching, a groove
+   * between two of the joint's pieces or an end relief beyond its end.
+   */
+  struct JointRelief
+  {
+    double from, to; ///< drawing z (mm)
+    /**
+     * Where it is judged (drawing z, mm): a groove's inner four fifths (its
+     * flanks may slope onto the seats), an end relief's half away from
+     * the joint (a chamfer or a sloped relief has opened there by half its
+     * depth; nearer the joint any slope touches a little, as it does).
+     */
+    double judged_from, judged_to;
+    double clearance; ///< least radial clearance where judged (mm)
+    bool   groove;    ///< between two pieces; false: an end relief
+
+    /** "relief groove" or "end relief". */
+    std::string
+    name() const
+    {
+      return groove ? "relief groove" : "end relief";
+    }
+  };
+
+
+
+  /**
    * The sections of a stack of bodies some of which are drawn as sections
    * (`Geometry/<body> section`), the others plain rings given as their
    * rectangles: every outline checked, where each body meets the next one
@@ -119,24 +147,24 @@ namespace coaxfit
     }
 
     /**
-     * The grooves between the pieces of joint @p k: each one's drawing z
-     * from and to and the least radial clearance between the two sections
-     * over its inner four fifths (mm); empty for one piece. A groove
-     * shallower than the joint's radial interference would touch.
+     * The reliefs of joint @p k: the grooves between its pieces, and the
+     * stretches beyond its ends where both sections go on facing each
+     * other (an end relief: a bore widened at its end), in z order. A
+     * relief shallower than the joint's radial interference would touch.
      */
-    const std::vector<std::array<double, 3>> &
-    joint_grooves(unsigned int k) const
+    const std::vector<JointRelief> &
+    joint_reliefs(unsigned int k) const
     {
-      return grooves[k];
+      return reliefs[k];
     }
 
     /**
-     * Across a groove of joint @p k at drawing z @p z: the inner section's
-     * outside and the outer section's bore there (mm; the surfaces that
-     * face each other across the groove).
+     * At drawing z @p z beside joint @p k: the inner section's outside and
+     * the outer section's bore (mm; the surfaces that face each other
+     * across a relief); a negative outside where a section has none there.
      */
     std::pair<double, double>
-    groove_radii(unsigned int k, double z) const;
+    relief_radii(unsigned int k, double z) const;
 
     /** The largest extent of the sections (mm). */
     double
@@ -157,16 +185,16 @@ namespace coaxfit
     surface_through(unsigned int b, double r, double z) const;
 
     /**
-     * The first groove of joint @p k (joint_grooves()) that a largest
+     * The first relief of joint @p k (joint_reliefs()) that a largest
      * diametral interference @p U (mm) would close: its clearance no more
      * than U / 2, so its bottom would touch, which is not modelled.
      */
-    std::optional<std::array<double, 3>>
-    closing_groove(const unsigned int k, const double U) const
+    std::optional<JointRelief>
+    closing_relief(const unsigned int k, const double U) const
     {
-      for (const std::array<double, 3> &groove : grooves[k])
-        if (groove[2] <= U / 2.)
-          return groove;
+      for (const JointRelief &relief : reliefs[k])
+        if (relief.clearance <= U / 2.)
+          return relief;
       return std::nullopt;
     }
 
@@ -295,7 +323,7 @@ namespace coaxfit
     std::vector<double>                          start; ///< joints' model z
     /** Per joint: its pieces, (lo, hi) in the drawing's and the model's z. */
     std::vector<std::vector<std::pair<double, double>>> drawn_pieces, pieces;
-    std::vector<std::vector<std::array<double, 3>>>     grooves; ///< per joint
+    std::vector<std::vector<JointRelief>>               reliefs; ///< per joint
     /** Per body: the mesh of its gmsh file, unrefined; null: an outline. */
     std::vector<std::shared_ptr<const Triangulation<2>>> files;
     std::vector<std::string> file_paths; ///< per body, as given (resolved)

@@ -43,6 +43,11 @@
 //    refused case's row has no verdict and no figures.
 // 7. End reliefs (the hub's bore widened beyond the joint's end): too
 //    shallow refused, deeper open with its gap, a chamfer accepted.
+// 8. Design/Mode = select with the long groove and the shaft at 150 C:
+//    the chosen fit's band ends below the interference that closes the
+//    groove in service; the FE check's margin at its top is 1 + gap / c
+//    of a plain run there (1e-6), just inside the bound open, just
+//    outside refused.
 
 #include "run_executable.h"
 #include "run_summary.h"
@@ -470,5 +475,63 @@ main()
                   << " line)\n";
     }
 
+
+  std::cout << "\n8. A selection with a relief that the loads narrow\n";
+  // The long groove with the shaft at 150 C and 100 N m to carry: the
+  // selection bounds each fit's largest interference by the groove open
+  // in service (an affine criterion at its 41 planes, gap over the drawn
+  // clearance); the FE check's margin at the band's top is 1 + gap / c of
+  // a plain run there, and runs just inside and outside the bound the
+  // linear model gives are open and refused.
+  {
+    const std::string long_groove
+      = "-25, 50; -20, 50; -20, 50.1; 20, 50.1; 20, 50; 25, 50; 25, 100; "
+        "-25, 100; -25, 50";
+    const std::string loads
+      = "subsection Material\n  subsection Shaft\n"
+        "    set Thermal expansion = 11.5e-6\n  end\n  subsection Hub\n"
+        "    set Thermal expansion = 11.5e-6\n  end\nend\n"
+        "subsection Operation\n  set Shaft temperature = 150\nend\n";
+    std::ofstream("select.prm") << groove_prm(long_groove) << loads
+                                << "subsection Design\n  set Mode = select\n"
+                                   "  set Required torque = 100\nend\n";
+    std::filesystem::remove_all("select");
+    RunResult            r     = run_coaxfit("select", quiet + "select.prm");
+    const nlohmann::json sel   = read_summary("select")["selection"];
+    const nlohmann::json j     = sel["joints"][0];
+    const double         U_max = j["U_max"], allowed = j["allowed_max"];
+    std::cout << "select: exit " << r.exit_code << ", fit "
+              << j["fit"].get<std::string>() << " (U up to " << U_max
+              << " mm), allowed up to " << std::setprecision(4) << allowed
+              << std::setprecision(6) << " mm by '"
+              << j["allowed_max_by"].get<std::string>() << "'\n";
+    std::ofstream("plain.prm") << groove_prm(long_groove) << loads;
+    const auto gap_at = [&](const double U, RunResult &run) {
+      std::filesystem::remove_all("plain");
+      std::ostringstream set;
+      set.precision(10);
+      set << "--set 'Fit/Diametral interference=" << U << "' ";
+      run = run_coaxfit("plain", quiet + set.str() + "plain.prm");
+      return run.exit_code == 0 ?
+               read_summary("plain")["joints"][0]["reliefs"][0]["least_gap"]
+                 .get<double>() :
+               std::nan("");
+    };
+    const double gap    = gap_at(U_max, r);
+    double       margin = 0.;
+    for (const auto &check : sel["checks"])
+      if (std::abs(check["U"][0].get<double>() - U_max) < 1e-12)
+        margin = check["margin"];
+    std::cout << "  at U " << U_max << " mm: exit " << r.exit_code
+              << ", least gap " << std::setprecision(4) << gap
+              << std::setprecision(6) << " mm; the FE check's margin there "
+              << agreement(margin, 1. + gap / 0.05, 1e-6)
+              << " with 1 + gap / 0.05\n";
+    gap_at(0.99 * allowed, r);
+    std::cout << "  at 0.99 x the bound: exit " << r.exit_code;
+    gap_at(1.01 * allowed, r);
+    std::cout << "; at 1.01 x the bound: exit " << r.exit_code << " ("
+              << gist(r.message, 12) << ")\n";
+  }
   return 0;
 }

@@ -869,21 +869,21 @@ namespace coaxfit
 
 
 
-  std::vector<JointFigures::ReliefGap>
-  StackFit::relief_gaps(const unsigned int                 k,
-                        const std::vector<Vector<double>> &state_fields) const
+  std::vector<std::vector<std::pair<double, double>>>
+  StackFit::relief_plane_gaps(
+    const unsigned int                 k,
+    const double                       interference,
+    const std::vector<Vector<double>> &state_fields) const
   {
-    std::vector<JointFigures::ReliefGap> result;
+    std::vector<std::vector<std::pair<double, double>>> result;
     if (!parameters.sections)
       return result;
     const StackSections &sections = *parameters.sections;
-    const StackJoint    &joint    = stack_joints[k];
+    const bool           whole    = stack_joints[k].whole;
     const double         offset   = sections.drawing_offset();
     for (const JointRelief &relief : sections.joint_reliefs(k))
       {
-        JointFigures::ReliefGap g{relief,
-                                  std::numeric_limits<double>::max(),
-                                  relief.judged_from};
+        result.emplace_back();
         // 41 planes where it is judged, as its drawn clearance.
         for (unsigned int s = 0; s <= 40; ++s)
           {
@@ -894,21 +894,42 @@ namespace coaxfit
             if (outside < 0. || !std::isfinite(bore))
               continue;
             // A half model holds the mirror image of z < 0.
-            const double z_model
-              = joint.whole ? z - offset : std::abs(z - offset);
-            const double gap = bore - outside - joint.interference
-                               + displacement_at(*bodies[k + 1],
-                                                 state_fields[k + 1],
-                                                 Point<2>(bore, z_model))[0]
-                               - displacement_at(*bodies[k],
-                                                 state_fields[k],
-                                                 Point<2>(outside, z_model))[0];
-            if (gap < g.gap)
-              {
-                g.gap = gap;
-                g.z   = z;
-              }
+            const double z_model = whole ? z - offset : std::abs(z - offset);
+            result.back().emplace_back(
+              z,
+              bore - outside - interference
+                + displacement_at(*bodies[k + 1],
+                                  state_fields[k + 1],
+                                  Point<2>(bore, z_model))[0]
+                - displacement_at(*bodies[k],
+                                  state_fields[k],
+                                  Point<2>(outside, z_model))[0]);
           }
+      }
+    return result;
+  }
+
+
+
+  std::vector<JointFigures::ReliefGap>
+  StackFit::relief_gaps(const unsigned int                 k,
+                        const std::vector<Vector<double>> &state_fields) const
+  {
+    std::vector<JointFigures::ReliefGap> result;
+    const auto                           planes
+      = relief_plane_gaps(k, stack_joints[k].interference, state_fields);
+    for (unsigned int r = 0; r < planes.size(); ++r)
+      {
+        const JointRelief &relief = parameters.sections->joint_reliefs(k)[r];
+        JointFigures::ReliefGap g{relief,
+                                  std::numeric_limits<double>::max(),
+                                  relief.judged_from};
+        for (const auto &[z, gap] : planes[r])
+          if (gap < g.gap)
+            {
+              g.gap = gap;
+              g.z   = z;
+            }
         result.push_back(g);
       }
     return result;
@@ -977,6 +998,15 @@ namespace coaxfit
 
             // The diametral gap at each point (about 0 in contact).
             figures.gap.push_back(joint_gaps(k, joints[k].interference, field));
+            // Each relief's gap over its drawn clearance at its planes.
+            figures.relief_gap.emplace_back();
+            const auto planes
+              = relief_plane_gaps(k, joints[k].interference, field);
+            for (unsigned int r = 0; r < planes.size(); ++r)
+              for (const auto &plane : planes[r])
+                figures.relief_gap.back().push_back(
+                  plane.second
+                  / parameters.sections->joint_reliefs(k)[r].clearance);
           }
         for (unsigned int b = 0; b < bodies.size(); ++b)
           {

@@ -121,6 +121,12 @@ namespace coaxfit
       n_points.push_back(points.size());
     for (const unsigned int k : running)
       n_gap_points.push_back(base[0].gap[k].size());
+    for (unsigned int k = 0; k < base[0].relief_gap.size(); ++k)
+      if (!base[0].relief_gap[k].empty())
+        {
+          relieved.push_back(k);
+          n_relief_points.push_back(base[0].relief_gap[k].size());
+        }
     q0                                  = flatten(base);
     const std::vector<bool> base_regime = regime(base);
     for (const unsigned int k : selected)
@@ -163,6 +169,9 @@ namespace coaxfit
           criterion_names.push_back("running clearance of "
                                     + parameters.joint_name(k) + " "
                                     + state_names[s]);
+        for (const unsigned int k : relieved)
+          criterion_names.push_back("a relief of " + parameters.joint_name(k)
+                                    + " open " + state_names[s]);
       }
     criterion_names.push_back("no requirement (no Design/Required torque or "
                               "axial force, "
@@ -317,6 +326,15 @@ namespace coaxfit
                               + parameters.joint_name(running[r]) + " "
                               + state_names[s]);
             }
+        // Each relief open at each of its planes.
+        for (unsigned int r = 0; r < relieved.size(); ++r)
+          for (unsigned int i = 0; i < n_relief_points[r]; ++i, ++at)
+            {
+              affine.emplace_back(at, 0.);
+              names.push_back("a relief of "
+                              + parameters.joint_name(relieved[r]) + " open "
+                              + state_names[s]);
+            }
       }
     // Each ductile body's pairs of normal stresses at its points.
     std::vector<std::pair<std::size_t, std::size_t>> yield_pairs;
@@ -462,6 +480,8 @@ namespace coaxfit
           }
         for (const unsigned int k : running)
           q.insert(q.end(), s.gap[k].begin(), s.gap[k].end());
+        for (const unsigned int k : relieved)
+          q.insert(q.end(), s.relief_gap[k].begin(), s.relief_gap[k].end());
       }
     if (!q0.empty() && q.size() != q0.size())
       throw std::logic_error("the figures of a stack's states changed size");
@@ -523,6 +543,15 @@ namespace coaxfit
             for (unsigned int i = 0; i < n_gap_points[r]; ++i, ++at)
               least = std::min(least, q[at]);
             improve(least / parameters.running_clearance);
+          }
+        // A relief's least gap over its clearance, as a ratio 1 + g / c
+        // (below 1: closed).
+        for (unsigned int r = 0; r < relieved.size(); ++r)
+          {
+            double least = infinite;
+            for (unsigned int i = 0; i < n_relief_points[r]; ++i, ++at)
+              least = std::min(least, q[at]);
+            improve(1. + least);
           }
         o = at;
       }
@@ -907,6 +936,9 @@ namespace coaxfit
                     linear_bound(a[at] - parameters.running_clearance,
                                  b[at],
                                  criterion_names[name]);
+                for (unsigned int r = 0; r < relieved.size(); ++r, ++name)
+                  for (unsigned int i = 0; i < n_relief_points[r]; ++i, ++at)
+                    linear_bound(a[at], b[at], criterion_names[name]);
               }
           }
         bands.push_back(band);

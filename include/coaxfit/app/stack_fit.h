@@ -421,6 +421,17 @@ namespace coaxfit
                 const std::vector<Vector<double>> &state_fields) const;
 
     /**
+     * Each relief of joint @p k (StackSections::joint_reliefs()): its
+     * radial gap (mm) at each plane where it is judged, (drawing z, gap),
+     * that the fields @p state_fields leave with the radial
+     * @p interference (mm).
+     */
+    std::vector<std::vector<std::pair<double, double>>>
+    relief_plane_gaps(unsigned int                       k,
+                      double                             interference,
+                      const std::vector<Vector<double>> &state_fields) const;
+
+    /**
      * Refuse (InputError naming Fit/<joint>) a relief that the bodies
      * close in the state of assembly or in operation: its least gap no
      * more than 0 (its bottom would touch, which is not modelled).

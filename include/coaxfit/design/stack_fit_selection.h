@@ -30,6 +30,12 @@ namespace coaxfit
      * about 0 where in contact), for Design/Running clearance.
      */
     std::vector<std::vector<double>> gap;
+    /**
+     * Per joint: its reliefs' radial gaps at their planes over their drawn
+     * clearances (StackFit::relief_plane_gaps()); below 0 the relief
+     * closes, which is not modelled.
+     */
+    std::vector<std::vector<double>> relief_gap;
   };
 
   /**
@@ -259,8 +265,10 @@ namespace coaxfit
     std::vector<std::string>  state_names;
     std::vector<unsigned int> n_points; ///< stress points per body
     /** Joints given a clearance that keep Design/Running clearance. */
-    std::vector<unsigned int>        running;
-    std::vector<unsigned int>        n_gap_points; ///< per entry of running
+    std::vector<unsigned int> running;
+    std::vector<unsigned int> n_gap_points; ///< per entry of running
+    /** The joints with reliefs, and their points in relief_gap. */
+    std::vector<unsigned int>        relieved, n_relief_points;
     std::vector<std::string>         criterion_names;
     std::vector<double>              U0;    ///< mm, all joints
     std::vector<double>              q0;    ///< flat figures at U0

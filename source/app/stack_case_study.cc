@@ -37,21 +37,6 @@ namespace coaxfit
       std::vector<double> U;
     };
 
-    /**
-     * Whether @p name is a mixed corner's directory (min, mean or max
-     * joined by '-'): an earlier study's, which a new one may replace.
-     */
-    bool
-    corner_name(const std::string &name)
-    {
-      std::istringstream in(name);
-      unsigned int       parts = 0;
-      for (std::string part; std::getline(in, part, '-'); ++parts)
-        if (part != "min" && part != "mean" && part != "max")
-          return false;
-      return parts >= 2 && name.back() != '-';
-    }
-
     /** The cases: min, mean and max, then the mixed corners. */
     std::vector<Case>
     cases_of(const unsigned int J)
@@ -81,6 +66,228 @@ namespace coaxfit
       std::ostringstream s;
       s << std::setprecision(6) << x;
       return s.str();
+    }
+
+    /** A finished study: its stack, cases, their runs, its ISO fits. */
+    struct Study
+    {
+      const StackParameters   &base;
+      const std::vector<Case> &cases;
+      const std::vector<Row>  &rows;
+      const std::string        fits; ///< "Shaft-Sleeve H7/s6, ..."
+    };
+
+    /** The varied joints' ISO fits, as the headings name them. */
+    std::string
+    fits_text(const StackParameters           &base,
+              const std::vector<unsigned int> &varied)
+    {
+      std::string fits;
+      for (const unsigned int k : varied)
+        fits += (fits.empty() ? "" : ", ") + base.joint_name(k) + " "
+                + base.fits[k].iso_fit;
+      return fits;
+    }
+
+    /**
+     * The verdict over every case: each failed criterion (its text before
+     * the figures, which the table and each case's report give) with the
+     * cases that fail it; a case without a verdict fails the study.
+     */
+    std::string
+    verdict_line(const Study &study)
+    {
+      std::vector<std::string>                        criteria;
+      std::map<std::string, std::vector<std::string>> failing;
+      std::vector<std::string>                        unjudged;
+      for (unsigned int i = 0; i < study.cases.size(); ++i)
+        {
+          const Row &row = study.rows[i];
+          if (!row.written || row.exit_code != 0)
+            unjudged.push_back(study.cases[i].name);
+          for (const std::string &failed : row.failed)
+            {
+              const std::string criterion = failed.substr(0, failed.find(": "));
+              if (failing.count(criterion) == 0)
+                criteria.push_back(criterion);
+              failing[criterion].push_back(study.cases[i].name);
+            }
+        }
+      std::string case_list;
+      for (const Case &c : study.cases)
+        case_list += (case_list.empty() ? "" : ", ") + c.name;
+      std::string verdict = "Verdict (cases " + case_list + "): ";
+      if (criteria.empty() && unjudged.empty())
+        return verdict + "OK";
+      std::string reasons;
+      for (const std::string &criterion : criteria)
+        {
+          std::string in;
+          for (const std::string &name : failing[criterion])
+            in += (in.empty() ? "" : ", ") + name;
+          reasons += (reasons.empty() ? "" : "; ") + criterion + " in "
+                     + (failing[criterion].size() == study.cases.size() ?
+                          std::string("every case") :
+                          in);
+        }
+      for (const std::string &name : unjudged)
+        reasons += (reasons.empty() ? "" : "; ") + std::string("case ") + name
+                   + " without a converged result";
+      return verdict + "FAILED: " + reasons;
+    }
+
+    /** The table's rows: a figure each, a cell per case. */
+    using Table = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+    /** The figures of every case: exit code, steps, U, columns, verdict. */
+    Table
+    figure_table(const Study &study)
+    {
+      Table      table;
+      const auto add = [&](const std::string &label, const auto &cell) {
+        std::vector<std::string> cells;
+        for (const Row &row : study.rows)
+          cells.push_back(cell(row));
+        table.emplace_back(label, cells);
+      };
+      add("exit code",
+          [](const Row &r) { return std::to_string(r.exit_code); });
+      add("steps", [](const Row &r) {
+        return r.written ? std::to_string(r.steps) : std::string("-");
+      });
+      for (unsigned int k = 0; k < study.base.n_joints(); ++k)
+        add(study.base.joint_name(k) + "_U_mm", [k](const Row &r) {
+          return k < r.U.size() ? figure(r.U[k]) : std::string("-");
+        });
+      const std::vector<std::string> names
+        = stack_column_names(study.base.bodies);
+      for (unsigned int c = 0; c < names.size(); ++c)
+        add(names[c], [c](const Row &r) {
+          return c < r.values.size() ? figure(r.values[c]) : std::string("-");
+        });
+      add("verdict", [](const Row &r) {
+        return r.verdict.empty() ? std::string("-") : r.verdict;
+      });
+      return table;
+    }
+
+    /** The console's table, each case's error and the verdict. */
+    void
+    print_table(std::ostream      &out,
+                const Study       &study,
+                const Table       &table,
+                const std::string &verdict,
+                const std::string &filename)
+    {
+      std::size_t width = 6;
+      for (const auto &[label, cells] : table)
+        width = std::max(width, label.size());
+      std::size_t column = 10;
+      for (const Case &c : study.cases)
+        column = std::max(column, c.name.size() + 2);
+      std::ostringstream console;
+      console << "\ncoaxfit: Fit/Case = all of " << filename << ": "
+              << study.cases.size() << " cases of the ISO fits " << study.fits
+              << " (the joints' cases in this order)\n"
+              << "  " << std::left << std::setw(width) << "figure"
+              << std::right;
+      for (const Case &c : study.cases)
+        console << std::setw(column) << c.name;
+      console << '\n';
+      for (const auto &[label, cells] : table)
+        {
+          console << "  " << std::left << std::setw(width) << label
+                  << std::right;
+          for (const std::string &cell : cells)
+            console << std::setw(column) << cell;
+          console << '\n';
+        }
+      for (unsigned int i = 0; i < study.cases.size(); ++i)
+        if (!study.rows[i].error.empty())
+          console << "  case " << study.cases[i].name << ": "
+                  << study.rows[i].error << '\n';
+      console << verdict << '\n';
+      out << console.str();
+    }
+
+    /** fit_cases.csv: a row per case. */
+    void
+    write_fit_cases(const std::string &name, const Study &study)
+    {
+      const std::vector<std::string> names
+        = stack_column_names(study.base.bodies);
+      std::ofstream csv = open_result_file(name);
+      csv << std::setprecision(10) << "case,exit_code,verdict,steps";
+      for (unsigned int k = 0; k < study.base.n_joints(); ++k)
+        csv << ',' << study.base.joint_name(k) << "_U_mm";
+      for (const std::string &n : names)
+        csv << ',' << n;
+      csv << ",error\n";
+      for (unsigned int i = 0; i < study.cases.size(); ++i)
+        {
+          const Row &row = study.rows[i];
+          csv << study.cases[i].name << ',' << row.exit_code << ','
+              << row.verdict << ',';
+          if (row.written)
+            csv << row.steps;
+          for (unsigned int k = 0; k < study.base.n_joints(); ++k)
+            {
+              csv << ',';
+              if (k < row.U.size())
+                csv << row.U[k];
+            }
+          for (unsigned int c = 0; c < names.size(); ++c)
+            {
+              csv << ',';
+              if (c < row.values.size() && std::isfinite(row.values[c]))
+                csv << row.values[c];
+            }
+          csv << ',' << csv_field(row.error) << '\n';
+        }
+      close_result_file(csv, name);
+    }
+
+    /** report.md: the verdict, the table, the cases' reports. */
+    void
+    write_report(const std::string &name,
+                 const Study       &study,
+                 const Table       &table,
+                 const std::string &verdict)
+    {
+      std::ofstream md = open_result_file(name);
+      md << "# coaxfit report: " << study.base.case_name
+         << ", Fit/Case = all: the ISO fits " << study.fits << ", "
+         << study.cases.size() << " cases\n\n## Verdict\n\n"
+         << verdict << "\n\n## The cases\n\n"
+         << "Each case has the joints " << study.fits
+         << " at their smallest (min) or largest (max) interference, or all "
+            "at their means; a mixed corner's name gives their cases in this "
+            "order. The joints interact, so a body's stress may be largest "
+            "in a mixed corner.\n\n| figure |";
+      for (const Case &c : study.cases)
+        md << ' ' << c.name << " |";
+      md << "\n|---|";
+      for (unsigned int i = 0; i < study.cases.size(); ++i)
+        md << "---:|";
+      md << '\n';
+      for (const auto &[label, cells] : table)
+        {
+          md << "| " << label << " |";
+          for (const std::string &cell : cells)
+            md << ' ' << cell << " |";
+          md << '\n';
+        }
+      md << "\nEach case's report:";
+      for (unsigned int i = 0; i < study.cases.size(); ++i)
+        if (study.rows[i].written)
+          md << " [" << study.cases[i].name << "](" << study.cases[i].name
+             << "/report.md)";
+      md << '\n';
+      for (unsigned int i = 0; i < study.cases.size(); ++i)
+        if (!study.rows[i].error.empty())
+          md << "\nCase " << study.cases[i].name << ": " << study.rows[i].error
+             << '\n';
+      close_result_file(md, name);
     }
   } // namespace
 
@@ -115,7 +322,8 @@ namespace coaxfit
     const std::vector<Case> cases = cases_of(varied.size());
 
     // The directory: replaced as a whole; directly in it the study's
-    // files, the cases, an earlier single run's files or study's corners.
+    // files, the cases, an earlier single run's files (an earlier study's
+    // corners: ResultDirectory knows them).
     const std::string target  = normalized_directory(base.output_directory());
     std::set<std::string> top = all_result_file_names();
     for (const Case &c : cases)
@@ -127,11 +335,6 @@ namespace coaxfit
       }
     for (const std::string &b : base.bodies)
       top.insert(Body::key_of(b) + ".vtu");
-    std::error_code error;
-    if (fs::is_directory(target, error))
-      for (const auto &entry : fs::directory_iterator(target, error))
-        if (entry.is_directory() && corner_name(entry.path().filename()))
-          top.insert(entry.path().filename().string());
     ResultDirectory directory(target, all_result_file_names(), top);
 
     std::vector<Row> rows(cases.size());
@@ -159,105 +362,17 @@ namespace coaxfit
           out);
       }
 
-    // The verdict over every case: each failed criterion (its text before
-    // the figures, which the table and each case's report give) with the
-    // cases that fail it; a case without a verdict fails the study.
-    std::vector<std::string>                        criteria;
-    std::map<std::string, std::vector<std::string>> failing;
-    std::vector<std::string>                        unjudged;
+    const Study       study{base, cases, rows, fits_text(base, varied)};
+    const std::string verdict = verdict_line(study);
+    const auto        table   = figure_table(study);
+    print_table(out, study, table, verdict, filename);
+    // Each case without a converged result: one line on the error stream,
+    // as its own run would give (its column in the table says the same).
     for (unsigned int i = 0; i < cases.size(); ++i)
-      {
-        if (!rows[i].written || rows[i].exit_code != 0)
-          unjudged.push_back(cases[i].name);
-        for (const std::string &failed : rows[i].failed)
-          {
-            const std::string criterion = failed.substr(0, failed.find(": "));
-            if (failing.count(criterion) == 0)
-              criteria.push_back(criterion);
-            failing[criterion].push_back(cases[i].name);
-          }
-      }
-    std::string case_list;
-    for (const Case &c : cases)
-      case_list += (case_list.empty() ? "" : ", ") + c.name;
-    std::string verdict = "Verdict (cases " + case_list + "): ";
-    if (criteria.empty() && unjudged.empty())
-      verdict += "OK";
-    else
-      {
-        verdict += "FAILED: ";
-        std::string reasons;
-        for (const std::string &criterion : criteria)
-          {
-            std::string in;
-            for (const std::string &name : failing[criterion])
-              in += (in.empty() ? "" : ", ") + name;
-            reasons += (reasons.empty() ? "" : "; ") + criterion + " in "
-                       + (failing[criterion].size() == cases.size() ?
-                            std::string("every case") :
-                            in);
-          }
-        for (const std::string &name : unjudged)
-          reasons += (reasons.empty() ? "" : "; ") + std::string("case ") + name
-                     + " without a converged result";
-        verdict += reasons;
-      }
-
-    // The table: a row per figure, a column per case.
-    const std::vector<std::string> names = stack_column_names(base.bodies);
-    std::vector<std::pair<std::string, std::vector<std::string>>> table;
-    const auto add = [&](const std::string &label, const auto &cell) {
-      std::vector<std::string> cells;
-      for (const Row &row : rows)
-        cells.push_back(cell(row));
-      table.emplace_back(label, cells);
-    };
-    add("exit code", [](const Row &r) { return std::to_string(r.exit_code); });
-    add("steps", [](const Row &r) {
-      return r.written ? std::to_string(r.steps) : std::string("-");
-    });
-    for (unsigned int k = 0; k < base.n_joints(); ++k)
-      add(base.joint_name(k) + "_U_mm", [k](const Row &r) {
-        return k < r.U.size() ? figure(r.U[k]) : std::string("-");
-      });
-    for (unsigned int c = 0; c < names.size(); ++c)
-      add(names[c], [c](const Row &r) {
-        return c < r.values.size() ? figure(r.values[c]) : std::string("-");
-      });
-    add("verdict", [](const Row &r) {
-      return r.verdict.empty() ? std::string("-") : r.verdict;
-    });
-
-    std::string fits;
-    for (const unsigned int k : varied)
-      fits += (fits.empty() ? "" : ", ") + base.joint_name(k) + " "
-              + base.fits[k].iso_fit;
-    std::size_t width = 6;
-    for (const auto &[label, cells] : table)
-      width = std::max(width, label.size());
-    std::size_t column = 10;
-    for (const Case &c : cases)
-      column = std::max(column, c.name.size() + 2);
-    std::ostringstream console;
-    console << "\ncoaxfit: Fit/Case = all of " << filename << ": "
-            << cases.size() << " cases of the ISO fits " << fits
-            << " (the joints' cases in this order)\n"
-            << "  " << std::left << std::setw(width) << "figure" << std::right;
-    for (const Case &c : cases)
-      console << std::setw(column) << c.name;
-    console << '\n';
-    for (const auto &[label, cells] : table)
-      {
-        console << "  " << std::left << std::setw(width) << label << std::right;
-        for (const std::string &cell : cells)
-          console << std::setw(column) << cell;
-        console << '\n';
-      }
-    for (unsigned int i = 0; i < cases.size(); ++i)
-      if (!rows[i].error.empty())
-        console << "  case " << cases[i].name << ": " << rows[i].error << '\n';
-    console << verdict << '\n';
-    out << console.str();
+      if (rows[i].exit_code != 0)
+        std::cerr << "coaxfit: " << (rows[i].exit_code == 2 ? "" : "error: ")
+                  << "case " << cases[i].name
+                  << " of Fit/Case = all: " << rows[i].error << std::endl;
 
     bool      nothing = true;
     const int code
@@ -269,74 +384,11 @@ namespace coaxfit
                               nothing);
     if (nothing)
       return code;
-
-    // fit_cases.csv: a row per case.
-    const std::string csv_name = directory.staging_path() + "/fit_cases.csv";
-    std::ofstream     csv      = open_result_file(csv_name);
-    csv << std::setprecision(10) << "case,exit_code,verdict,steps";
-    for (unsigned int k = 0; k < base.n_joints(); ++k)
-      csv << ',' << base.joint_name(k) << "_U_mm";
-    for (const std::string &n : names)
-      csv << ',' << n;
-    csv << ",error\n";
-    for (unsigned int i = 0; i < cases.size(); ++i)
-      {
-        const Row &row = rows[i];
-        csv << cases[i].name << ',' << row.exit_code << ',' << row.verdict
-            << ',';
-        if (row.written)
-          csv << row.steps;
-        for (unsigned int k = 0; k < base.n_joints(); ++k)
-          {
-            csv << ',';
-            if (k < row.U.size())
-              csv << row.U[k];
-          }
-        for (unsigned int c = 0; c < names.size(); ++c)
-          {
-            csv << ',';
-            if (c < row.values.size() && std::isfinite(row.values[c]))
-              csv << row.values[c];
-          }
-        csv << ',' << csv_field(row.error) << '\n';
-      }
-    close_result_file(csv, csv_name);
-
-    // report.md: the verdict, the table, the cases' reports.
-    const std::string report_name = directory.staging_path() + "/report.md";
-    std::ofstream     md          = open_result_file(report_name);
-    md << "# coaxfit report: " << base.case_name
-       << ", Fit/Case = all: the ISO fits " << fits << ", " << cases.size()
-       << " cases\n\n## Verdict\n\n"
-       << verdict << "\n\n## The cases\n\n"
-       << "Each case has the joints " << fits
-       << " at their smallest (min) or largest (max) interference, or all "
-          "at their means; a mixed corner's name gives their cases in this "
-          "order. The joints interact, so a body's stress may be largest "
-          "in a mixed corner.\n\n| figure |";
-    for (const Case &c : cases)
-      md << ' ' << c.name << " |";
-    md << "\n|---|";
-    for (unsigned int i = 0; i < cases.size(); ++i)
-      md << "---:|";
-    md << '\n';
-    for (const auto &[label, cells] : table)
-      {
-        md << "| " << label << " |";
-        for (const std::string &cell : cells)
-          md << ' ' << cell << " |";
-        md << '\n';
-      }
-    md << "\nEach case's report:";
-    for (unsigned int i = 0; i < cases.size(); ++i)
-      if (rows[i].written)
-        md << " [" << cases[i].name << "](" << cases[i].name << "/report.md)";
-    md << '\n';
-    for (unsigned int i = 0; i < cases.size(); ++i)
-      if (!rows[i].error.empty())
-        md << "\nCase " << cases[i].name << ": " << rows[i].error << '\n';
-    close_result_file(md, report_name);
-
+    write_fit_cases(directory.staging_path() + "/fit_cases.csv", study);
+    write_report(directory.staging_path() + "/report.md",
+                 study,
+                 table,
+                 verdict);
     directory.commit(out);
     out << "  results in " << target
         << " (fit_cases.csv, report.md, one subdirectory per case)"

@@ -800,6 +800,7 @@ namespace coaxfit
                         * f.diameter * joint.length() / 2. / 1000.;
     f.axial_force_capacity = 2000. * f.torque_capacity / f.diameter;
     // Against DIN 7190's resultant of both loads (as a torque at D).
+    f.slip_judged = parameters.slip_judged(k);
     f.slip_safety
       = parameters.slip_judged(k) ?
           f.torque_capacity / parameters.required_torque_at(f.diameter) :

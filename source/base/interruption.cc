@@ -168,6 +168,10 @@ namespace coaxfit
         if (::sigaction(signal, &action, nullptr) != 0)
           throw std::runtime_error("cannot install the signal handlers");
       std::signal(SIGXFSZ, SIG_IGN);
+      // A closed standard output (`coaxfit ... | head -1`) is a failed write
+      // the run reports (exit 3, its staging directory removed), not a
+      // death by SIGPIPE that leaves the staging directory behind.
+      std::signal(SIGPIPE, SIG_IGN);
       std::thread(watch).detach();
     }
   } // namespace Interruption

@@ -172,8 +172,10 @@ namespace coaxfit
         const auto [out_lo, out_hi] = z_range(*drawn[k + 1]);
         const double below          = std::max(in_lo, out_lo),
                      above          = std::min(in_hi, out_hi);
+        // An end relief judged up to the bodies' end (a plane just inside
+        // it: on the end face itself the bore has no crossing).
         if (const double L = z_lo[k] - below; L > tol)
-          relief(below, z_lo[k], below + 0.05 * L, below + 0.5 * L, false);
+          relief(below, z_lo[k], below + 1e-6 * L, below + 0.5 * L, false);
         for (unsigned int i = 0; i + 1 < drawn_pieces[k].size(); ++i)
           {
             const double a = drawn_pieces[k][i].second,
@@ -181,7 +183,7 @@ namespace coaxfit
             relief(a, b, a + 0.1 * (b - a), b - 0.1 * (b - a), true);
           }
         if (const double L = above - z_hi[k]; L > tol)
-          relief(z_hi[k], above, z_hi[k] + 0.5 * L, above - 0.05 * L, false);
+          relief(z_hi[k], above, z_hi[k] + 0.5 * L, above - 1e-6 * L, false);
         shoulders.push_back(
           shoulder_beside(faces, z_lo[k], z_hi[k], tol, both));
         half_length.push_back(0.5 * (z_hi[k] - z_lo[k]));

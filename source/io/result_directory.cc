@@ -36,6 +36,17 @@ namespace coaxfit
       return std::regex_match(name, files);
     }
 
+    /**
+     * Whether @p name is a mixed corner's directory of a stack's Fit/Case =
+     * all (min, mean or max joined by '-': `min-max`): an earlier study's.
+     */
+    bool
+    corner_directory(const std::string &name)
+    {
+      static const std::regex corner("(min|mean|max)(-(min|mean|max))+");
+      return std::regex_match(name, corner);
+    }
+
     const std::string partial_marker = ".partial-";
 
     [[noreturn]] void
@@ -178,14 +189,17 @@ namespace coaxfit
         for (auto entry = fs::recursive_directory_iterator(target, error);
              entry != fs::recursive_directory_iterator();
              entry.increment(error))
-          if (!top_level.empty() && entry.depth() == 0 ?
-                top_level.count(entry->path().filename().string()) == 0 :
-                (result_files.count(entry->path().filename().string()) == 0
-                 && !(
-                   entry.depth() <= 1 && entry->is_regular_file()
-                   && assembly_result_file(entry->path().filename().string())))
-                  || (entry->is_directory()
-                      && entry.depth() > (top_level.empty() ? 0 : 1)))
+          if (entry.depth() == 0 && entry->is_directory()
+              && corner_directory(entry->path().filename().string()))
+            continue;
+          else if (!top_level.empty() && entry.depth() == 0 ?
+                     top_level.count(entry->path().filename().string()) == 0 :
+                     (result_files.count(entry->path().filename().string()) == 0
+                      && !(entry.depth() <= 1 && entry->is_regular_file()
+                           && assembly_result_file(
+                             entry->path().filename().string())))
+                       || (entry->is_directory()
+                           && entry.depth() > (top_level.empty() ? 0 : 1)))
             refuse(target_name,
                    "contains '" + fs::relative(entry->path(), target).string()
                      + "', which coaxfit does not write; the results replace "

@@ -29,7 +29,8 @@ namespace coaxfit
    * staged and replaced as a whole: a failed or interrupted study leaves
    * the earlier results untouched. A case that is refused (exit 1: a
    * groove its interference closes) or whose process diverges has its
-   * column with its exit code and no subdirectory, and the verdict fails.
+   * column with its exit code and no subdirectory, a line on the error
+   * stream, and the verdict fails; the other cases are written.
    */
   class StackCaseStudy
   {

@@ -74,6 +74,7 @@ namespace coaxfit
     double       torque_capacity;      ///< N m (friction given)
     double       axial_force_capacity; ///< N, nu p_mean pi D l
     double       slip_safety;          ///< over Design/Required torque; 0: none
+    bool         slip_judged = false;  ///< a required torque judges its slip
     /**
      * @name Joining (DIN 7190): the outer part of the joint heated, or the
      * inner one cooled (the parts of Assembly/Order), until the largest

@@ -35,7 +35,7 @@ namespace coaxfit
          {"_closed", [](const JointFigures &f) { return f.closed ? 1. : 0.; }},
          {"_safety_slip",
           [](const JointFigures &f) {
-            return f.slip_safety > 0. ? f.slip_safety : std::nan("");
+            return f.slip_judged ? f.slip_safety : std::nan("");
           }},
          {"_press_in_force_N",
           [](const JointFigures &f) { return f.press_in_force; }},
@@ -53,8 +53,12 @@ namespace coaxfit
     static const std::vector<StackColumn<BodyFigures>> columns
       = {{"_von_mises_mid_plane_MPa",
           [](const BodyFigures &f) { return f.von_mises_mid_plane; }},
-         {"_safety_yield", [](const BodyFigures &f) {
+         {"_safety_yield",
+          [](const BodyFigures &f) {
             return f.yield_safety > 0. ? f.yield_safety : std::nan("");
+          }},
+         {"_safety_fracture", [](const BodyFigures &f) {
+            return f.fracture_safety > 0. ? f.fracture_safety : std::nan("");
           }}};
     return columns;
   }

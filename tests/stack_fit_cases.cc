@@ -21,8 +21,11 @@
 //    at its largest squeezes it, not enough), the hub's in min and max-min
 //    (20.53 MPa); the case of the means passes both.
 // 3. A case's parameters.prm repeats it (1e-12); a second study replaces
-//    the first; a joint with its own Fit/<joint>/Case keeps it while the
-//    other varies (three cases).
+//    the first, and a single run the study; cases that do not converge
+//    are written with exit 2 and a line each on the error stream; a
+//    standard output closed during the study gives exit 3 with nothing
+//    put in place; a joint with its own Fit/<joint>/Case keeps it while
+//    the other varies (three cases).
 // 4. Bad input: exit 1, one line naming the entry, nothing written.
 
 #include <coaxfit/design/compound_cylinders.h>
@@ -208,6 +211,33 @@ main()
     r = run_coaxfit("all", quiet + "rings.prm");
     std::cout << "a second study into all/: exit " << r.exit_code << "; "
               << entries("all") << '\n';
+    r = run_coaxfit("all", quiet + "--set Fit/Case=mean rings.prm");
+    std::cout << "a single run (Fit/Case = mean) into the study's directory: "
+                 "exit "
+              << r.exit_code << "; " << entries("all") << '\n';
+    // Cases that do not converge in two steps: written, exit 2, a line on
+    // the error stream each.
+    std::filesystem::remove_all("steps");
+    r = run_coaxfit("steps", quiet + "--set 'Coupling/Max steps=2' rings.prm");
+    std::cout << "Coupling/Max steps = 2: exit " << r.exit_code << ", "
+              << r.lines
+              << " lines on the error stream, the first: " << gist(r.message, 9)
+              << "; steps/: " << entries("steps") << '\n';
+    // Standard output closed during the study: exit 3, nothing put in place.
+    std::filesystem::remove_all("piped");
+    r = run_command("bash -c '" + std::string(coaxfit_executable) + quiet
+                    + "--set Output/Directory=piped rings.prm 2>/dev/null | "
+                      "head -c 1 >/dev/null; echo ${PIPESTATUS[0]}'");
+    std::cout << "its standard output closed after one byte: exit "
+              << r.message.substr(0, r.message.find('\n'))
+              << ", results put in place "
+              << (std::filesystem::exists("piped") ? "YES" : "no")
+              << ", a staging directory left "
+              << (coaxfit_test::run_command("ls -a | grep -q partial").exit_code
+                      == 0 ?
+                    "YES" :
+                    "no")
+              << '\n';
     std::filesystem::remove_all("own");
     r = run_coaxfit("own", quiet + "--set Fit/Sleeve-Hub/Case=max rings.prm");
     table = read_table("own");

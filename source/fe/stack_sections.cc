@@ -165,7 +165,12 @@ namespace coaxfit
               if (outside >= 0. && std::isfinite(bore))
                 r.clearance = std::min(r.clearance, bore - outside);
             }
-          if (std::isfinite(r.clearance))
+          // An end relief deeper than a tenth of the joint's radius cannot
+          // close (interferences and deformations are of the order of
+          // 1e-3 of it): a wheel's rim wider than its hub faces the shaft
+          // across tens of millimetres, no relief.
+          if (std::isfinite(r.clearance)
+              && (groove || r.clearance < 0.1 * radius[k]))
             reliefs[k].push_back(r);
         };
         const auto [in_lo, in_hi]   = z_range(*drawn[k]);

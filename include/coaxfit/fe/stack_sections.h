@@ -149,8 +149,9 @@ namespace coaxfit
     /**
      * The reliefs of joint @p k: the grooves between its pieces, and the
      * stretches beyond its ends where both sections go on facing each
-     * other (an end relief: a bore widened at its end), in z order. A
-     * relief shallower than the joint's radial interference would touch.
+     * other less than a tenth of the joint's radius apart (an end relief:
+     * a bore widened at its end, a chamfer), in z order. A relief
+     * shallower than the joint's radial interference would touch.
      */
     const std::vector<JointRelief> &
     joint_reliefs(unsigned int k) const

@@ -921,6 +921,10 @@ namespace coaxfit
       = relief_plane_gaps(k, stack_joints[k].interference, state_fields);
     for (unsigned int r = 0; r < planes.size(); ++r)
       {
+        // None of its planes has both surfaces (a sliver between the 201
+        // planes of its clearance): nothing to judge.
+        if (planes[r].empty())
+          continue;
         const JointRelief &relief = parameters.sections->joint_reliefs(k)[r];
         JointFigures::ReliefGap g{relief,
                                   std::numeric_limits<double>::max(),

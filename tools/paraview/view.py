@@ -42,9 +42,10 @@ Colours: the field NAME (default von_Mises_MPa; any scalar array of the
 bodies, e.g. sigma_tt_MPa) with a colour range of each body's own (copied by
 a Calculator into BODY_FIELD, e.g. shaft_von_Mises_MPa, so that each body
 has its own lookup table and scalar bar). The range leaves out the peak at the
-ends of the contact and of its pieces beside a groove (the edge singularity, within Design/Edge distance of
-the edge as in summary.json, else 5 % of the contact length); values above
-the range are drawn magenta, below it black, and the peaks are printed.
+ends of the contact and of its pieces beside a groove (the edge singularity,
+within Design/Edge distance of the edge as in summary.json, else 5 % of the
+contact length); values above the range are drawn magenta, below it black,
+and the peaks are printed.
 Stresses are cylindrical components (r, z, theta): mirrored about the
 mid-plane sigma_rz changes sign and the copy says so; the half of the section
 at r < 0 is the same meridian turned by 180 degrees, where cylindrical
@@ -205,7 +206,8 @@ from paraview.simple import (AppendDatasets, AssignViewToLayout, Calculator,  # 
                              ColorBy, CreateLayout, CreateView, Delete, ExtractBlock,
                              ExtractSelection, ExtractSurface, GetColorTransferFunction,
                              GetLayout, GetLayouts, GetScalarBar, GetViewsInLayout,
-                             IDSelectionSource, MergeBlocks, PVDReader, Reflect, RemoveLayout, Render, RenameSource, RenameView,
+                             IDSelectionSource, MergeBlocks, PVDReader, Reflect,
+                             RemoveLayout, Render, RenameSource, RenameView,
                              RotationalExtrusion, Ruler, SaveScreenshot, SaveState,
                              SetActiveSource, SetActiveView, Show, Text, Transform,
                              WarpByVector)

@@ -211,7 +211,8 @@ main()
                   "0.06,abc' three_rings.prm");
   std::cout << "a bad value: exit " << r.exit_code << "; subdirectories "
             << std::filesystem::exists("study_sweep/01_0.06") << ' '
-            << std::filesystem::exists("study_sweep/02_abc") << '\n';
+            << std::filesystem::exists("study_sweep/02_abc") << "; " << r.lines
+            << " line on the error stream: " << gist(r.message, 6) << '\n';
   const auto bad = read_csv("study_sweep/sweep.csv");
   for (unsigned int i = 1; i < bad.size(); ++i)
     std::cout << "  " << bad[i][0] << ", exit " << bad[i][1] << ", "
@@ -223,7 +224,8 @@ main()
             << r.exit_code << " (the first study replaced: 01_0.06 "
             << (std::filesystem::exists("study_sweep/01_0.06") ? "LEFT" :
                                                                  "gone")
-            << ")\n";
+            << "); " << r.lines
+            << " line on the error stream: " << gist(r.message, 8) << '\n';
   for (unsigned int i = 1; i < steps.size(); ++i)
     {
       const nlohmann::json s = read_summary(

@@ -144,6 +144,18 @@ namespace coaxfit
         table << '\n';
       }
     out << table.str();
+    // Each value without a converged result: one line on the error stream,
+    // as its own run would give (its row in the table says the same).
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      if (rows[i].exit_code != 0)
+        {
+          const std::string value = "--sweep value " + sweep.values[i];
+          std::cerr << "coaxfit: " << (rows[i].exit_code == 2 ? "" : "error: ")
+                    << (rows[i].error.compare(0, value.size(), value) == 0 ?
+                          "" :
+                          value + ": ")
+                    << rows[i].error << std::endl;
+        }
     bool      nothing = true;
     const int code
       = stack_study_exit_code(rows, "value of the sweep", study, out, nothing);

@@ -76,6 +76,31 @@ namespace coaxfit_test
              "end\n";
   }
 
+  /** The comma-separated fields of @p line (no quoting). */
+  inline std::vector<std::string>
+  csv_fields(const std::string &line)
+  {
+    std::istringstream       f(line);
+    std::vector<std::string> fields;
+    for (std::string field; std::getline(f, field, ',');)
+      fields.push_back(field);
+    return fields;
+  }
+
+  /**
+   * The fields of the first line of the CSV file @p file that begins with
+   * @p start; empty if none does.
+   */
+  inline std::vector<std::string>
+  csv_row(const std::string &file, const std::string &start)
+  {
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind(start, 0) == 0)
+        return csv_fields(line);
+    return {};
+  }
+
   /** Options that keep a test run to summary.json and the CSV files. */
   inline const std::string quiet
     = " --set \"Output/Write vtu=false\" --set \"Output/Write plots=false\" ";

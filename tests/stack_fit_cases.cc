@@ -83,20 +83,14 @@ namespace
   std::map<std::string, std::map<std::string, std::string>>
   read_table(const std::string &dir)
   {
-    std::ifstream            in(dir + "/fit_cases.csv");
-    std::string              line;
-    std::vector<std::string> header;
+    std::ifstream in(dir + "/fit_cases.csv");
+    std::string   line;
     std::map<std::string, std::map<std::string, std::string>> table;
     std::getline(in, line);
-    std::istringstream h(line);
-    for (std::string field; std::getline(h, field, ',');)
-      header.push_back(field);
+    const std::vector<std::string> header = csv_fields(line);
     while (std::getline(in, line))
       {
-        std::istringstream       f(line);
-        std::vector<std::string> fields;
-        for (std::string field; std::getline(f, field, ',');)
-          fields.push_back(field);
+        const std::vector<std::string> fields = csv_fields(line);
         for (unsigned int c = 0; c < fields.size() && c < header.size(); ++c)
           table[fields[0]][header[c]] = fields[c];
       }
@@ -297,10 +291,7 @@ main()
     for (std::string line; std::getline(in, line);)
       if (line.rfind("study.prm", 0) == 0)
         {
-          std::istringstream       f(line);
-          std::vector<std::string> fields;
-          for (std::string field; std::getline(f, field, ',');)
-            fields.push_back(field);
+          const std::vector<std::string> fields = csv_fields(line);
           std::cout << "  " << fields[0] << ": exit " << fields[1] << ", "
                     << fields[2] << ": "
                     << gist(line.substr(line.find('"')), 25) << '\n';

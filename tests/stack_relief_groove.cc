@@ -417,19 +417,13 @@ main()
     r = run_command("timeout 60 " + std::string(coaxfit_executable) + quiet
                     + "--table batch.csv "
                       "batch_long.prm batch_hot.prm 2>/dev/null >/dev/null");
-    std::ifstream in("batch.csv");
-    for (std::string line; std::getline(in, line);)
-      if (line.rfind("batch_hot.prm", 0) == 0)
-        {
-          std::istringstream       f(line);
-          std::vector<std::string> fields;
-          for (std::string field; std::getline(f, field, ',');)
-            fields.push_back(field);
-          std::cout << "in a batch: exit " << r.exit_code << ", its row: exit "
-                    << fields[1] << ", " << fields[2] << ", verdict '"
-                    << fields[3] << "', joint '" << fields[6]
-                    << "', mean pressure '" << fields[9] << "'\n";
-        }
+    const std::vector<std::string> fields
+      = csv_row("batch.csv", "batch_hot.prm");
+    if (!fields.empty())
+      std::cout << "in a batch: exit " << r.exit_code << ", its row: exit "
+                << fields[1] << ", " << fields[2] << ", verdict '" << fields[3]
+                << "', joint '" << fields[6] << "', mean pressure '"
+                << fields[9] << "'\n";
   }
 
   std::cout << "\n7. End reliefs: a bore widened beyond the joint's end\n";

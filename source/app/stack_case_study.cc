@@ -236,12 +236,7 @@ namespace coaxfit
               if (k < row.U.size())
                 csv << row.U[k];
             }
-          for (unsigned int c = 0; c < names.size(); ++c)
-            {
-              csv << ',';
-              if (c < row.values.size() && std::isfinite(row.values[c]))
-                csv << row.values[c];
-            }
+          write_study_values(csv, row, names.size());
           csv << ',' << csv_field(row.error) << '\n';
         }
       close_result_file(csv, name);
@@ -369,10 +364,7 @@ namespace coaxfit
     // Each case without a converged result: one line on the error stream,
     // as its own run would give (its column in the table says the same).
     for (unsigned int i = 0; i < cases.size(); ++i)
-      if (rows[i].exit_code != 0)
-        std::cerr << "coaxfit: " << (rows[i].exit_code == 2 ? "" : "error: ")
-                  << "case " << cases[i].name
-                  << " of Fit/Case = all: " << rows[i].error << std::endl;
+      say_unconverged(rows[i], "case " + cases[i].name + " of Fit/Case = all");
 
     bool      nothing = true;
     const int code

@@ -2,7 +2,9 @@
 #include <coaxfit/base/input_error.h>
 #include <coaxfit/parameters/stack_parameters.h>
 
+#include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 
 namespace coaxfit
@@ -54,6 +56,34 @@ namespace coaxfit
         fs::remove_all(into);
       }
     return run;
+  }
+
+
+
+  void
+  write_study_values(std::ostream        &csv,
+                     const StackStudyRun &run,
+                     const std::size_t    n)
+  {
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        csv << ',';
+        if (c < run.values.size() && std::isfinite(run.values[c]))
+          csv << run.values[c];
+      }
+  }
+
+
+
+  void
+  say_unconverged(const StackStudyRun &run, const std::string &label)
+  {
+    if (run.exit_code == 0)
+      return;
+    std::cerr << "coaxfit: " << (run.exit_code == 2 ? "" : "error: ")
+              << (run.error.compare(0, label.size(), label) == 0 ? "" :
+                                                                   label + ": ")
+              << run.error << std::endl;
   }
 
 

@@ -147,15 +147,7 @@ namespace coaxfit
     // Each value without a converged result: one line on the error stream,
     // as its own run would give (its row in the table says the same).
     for (unsigned int i = 0; i < rows.size(); ++i)
-      if (rows[i].exit_code != 0)
-        {
-          const std::string value = "--sweep value " + sweep.values[i];
-          std::cerr << "coaxfit: " << (rows[i].exit_code == 2 ? "" : "error: ")
-                    << (rows[i].error.compare(0, value.size(), value) == 0 ?
-                          "" :
-                          value + ": ")
-                    << rows[i].error << std::endl;
-        }
+      say_unconverged(rows[i], "--sweep value " + sweep.values[i]);
     bool      nothing = true;
     const int code
       = stack_study_exit_code(rows, "value of the sweep", study, out, nothing);
@@ -175,12 +167,7 @@ namespace coaxfit
             << row.verdict << ',';
         if (row.written && !row.no_fits)
           csv << row.steps;
-        for (unsigned int c = 0; c < names.size(); ++c)
-          {
-            csv << ',';
-            if (c < row.values.size() && std::isfinite(row.values[c]))
-              csv << row.values[c];
-          }
+        write_study_values(csv, row, names.size());
         csv << ',' << csv_field(row.error) << '\n';
       }
     close_result_file(csv, csv_name);

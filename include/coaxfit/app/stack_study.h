@@ -121,6 +121,23 @@ namespace coaxfit
                        std::ostream                           &out);
 
   /**
+   * Write the figures of @p run for @p n columns of a study's CSV table,
+   * each after a comma (a run without them, or NaN: an empty field).
+   */
+  void
+  write_study_values(std::ostream        &csv,
+                     const StackStudyRun &run,
+                     std::size_t          n);
+
+  /**
+   * If @p run gave no converged result, say so in one line on the error
+   * stream as its own run would: `coaxfit: [error: ]<label>: <error>`
+   * (the label left out where the error begins with it).
+   */
+  void
+  say_unconverged(const StackStudyRun &run, const std::string &label);
+
+  /**
    * The exit code of a study of @p runs: 0 if each converged, else the
    * largest of 2 (not converged) and 1 (refused). If none was written,
    * says so to @p out (@p what: "value of the sweep", "case of the

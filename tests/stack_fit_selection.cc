@@ -54,6 +54,15 @@ namespace
   double running = 0.;
 
   /**
+   * The hub's Temperature limit (C; 0: none): with one, a hub fit that
+   * heating the hub from 20 C to it does not open by its largest
+   * interference, plus what the shaft's fit adds to the sleeve's outside
+   * (made first: Assembly/Order inside out), plus the joining clearance
+   * 0.001 D, cannot be joined by temperature (case 2d).
+   */
+  double hub_limit = 0.;
+
+  /**
    * Design/Required axial force (N) and Application factor of the scene
    * and the closed form (case 1b).
    */
@@ -77,7 +86,11 @@ namespace
       s << "  subsection " << names[b] << "\n    set E = " << rings[b].E
         << "\n    set nu = " << rings[b].nu
         << "\n    set Yield strength = " << yield[b]
-        << (b == 2 ? "\n    set Thermal expansion = 23e-6" : "") << "\n  end\n";
+        << (b == 2 ? "\n    set Thermal expansion = 23e-6" : "")
+        << (b == 2 && hub_limit > 0. ?
+              "\n    set Temperature limit = " + std::to_string(hub_limit) :
+              "")
+        << "\n  end\n";
     s << "end\nsubsection Fit\n  set Friction coefficient = " << mu
       << "\n  subsection Shaft-Sleeve\n    set Diametral interference = "
          "0.04\n  end\nend\n"
@@ -142,10 +155,27 @@ namespace
     return margin;
   }
 
+  /**
+   * The closed form's heating of the hub for joining (C) with the shaft's
+   * and the hub's largest measured interferences @p U_shaft and @p U_hub
+   * (mm): the hub's bore opened by U_hub, the growth 2 u_r(45 mm) of the
+   * sleeve's outside on the shaft alone (the compound cylinders of those
+   * two rings), and the joining clearance 0.09 mm.
+   */
+  double
+  hub_joining_temperature(const double U_shaft, const double U_hub)
+  {
+    const coaxfit::CompoundCylinders shaft_and_sleeve(
+      {rings[0], rings[1]}, {U_shaft}, 0., 0., true);
+    const double growth = 2. * shaft_and_sleeve.radial_displacement(1, 45.);
+    return 20. + (U_hub + growth + 0.09) / (90. * 23e-6);
+  }
+
   /** A combination of fits judged by the closed form. */
   struct Choice
   {
     std::vector<coaxfit::IsoFit> fits;
+    unsigned int                 unjoinable    = 0;
     unsigned int                 not_preferred = 0;
     double                       width = 0., margin = 0.;
   };
@@ -206,12 +236,21 @@ namespace
                       += f[k]->max_interference() - f[k]->min_interference();
                   }
               c.margin = margin;
+              if (hub_limit > 0. && chosen[1])
+                c.unjoinable
+                  = hub_joining_temperature(chosen[0] ?
+                                              1e-3 * a.max_interference() :
+                                              fixed[0],
+                                            1e-3 * b.max_interference())
+                    > hub_limit;
               feasible.push_back(c);
             }
         }
     std::sort(feasible.begin(),
               feasible.end(),
               [](const Choice &a, const Choice &b) {
+                if (a.unjoinable != b.unjoinable)
+                  return a.unjoinable < b.unjoinable;
                 if (a.not_preferred != b.not_preferred)
                   return a.not_preferred < b.not_preferred;
                 if (a.width != b.width)
@@ -492,6 +531,62 @@ main()
               << std::setprecision(6) << "; the run's verdict "
               << j["verdict"]["ok"] << ", running clearance left "
               << j["joints"][0]["contact"]["gap_min"].get<double>() << " mm\n";
+  }
+
+  // 2d. The hub may be heated to 150 C only: a combination is joinable by
+  // temperature if the hub's bore, heated, opens by its fit's largest
+  // interference plus what the shaft's fit (made first) adds to the
+  // sleeve's outside, plus the joining clearance. Without the growth the
+  // first of case 1 (H6/s6 + H7/u6: 134.0 C) would pass; with it, it
+  // needs 159.3 C.
+  {
+    hub_limit = 150.;
+    std::cout << "2d. both joints selected, the hub's Temperature limit "
+              << hub_limit << " C\n";
+    const std::string    dir = base + "/joinable";
+    const nlohmann::json j   = run_scene(dir, write_scene(dir, scene(torque)));
+    unsigned long        n   = 0;
+    const std::vector<Choice> ranking
+      = closed_form_ranking({true, true}, {0., 0.}, torque, n);
+    const std::string first      = ranking.empty() ? "none" :
+                                                     ranking[0].fits[0].name + " + "
+                                                  + ranking[0].fits[1].name;
+    unsigned int      unjoinable = 0;
+    for (const Choice &c : ranking)
+      unjoinable += c.unjoinable;
+    std::cout << "  feasible: run "
+              << j["selection"]["feasible"].get<unsigned long>()
+              << ", closed form " << ranking.size() << ", of which "
+              << unjoinable << " cannot be joined by heating the hub\n"
+              << "  chosen: " << fits_of(j)
+              << "; the closed form's first: " << first
+              << (fits_of(j) == first ? " (the same)" : " (DIFFERS)") << '\n';
+    compare_checks(j, {true, true}, {0., 0.}, torque, 3e-4);
+    if (!ranking.empty())
+      {
+        const auto  &joining = j["joints"][1]["joining"];
+        const double exact   = hub_joining_temperature(
+          1e-3 * ranking[0].fits[0].max_interference(),
+          1e-3 * ranking[0].fits[1].max_interference());
+        std::cout << "  the run's joining of Sleeve-Hub: heat the hub to "
+                  << std::setprecision(5)
+                  << joining["heat_outer_to"].get<double>()
+                  << " C (closed form " << exact << " C, "
+                  << agreement(joining["heat_outer_to"].get<double>(),
+                               exact,
+                               1e-5)
+                  << "), above its limit: " << joining["heat_above_limit"]
+                  << std::setprecision(6) << '\n';
+      }
+    const auto u6 = coaxfit::iso_fit("H7/u6", 90.),
+               s6 = coaxfit::iso_fit("H6/s6", 60.);
+    std::cout << "  H6/s6 + H7/u6 would need " << std::setprecision(5)
+              << hub_joining_temperature(1e-3 * s6.max_interference(),
+                                         1e-3 * u6.max_interference())
+              << " C (without the sleeve's growth "
+              << 20. + (1e-3 * u6.max_interference() + 0.09) / (90. * 23e-6)
+              << " C)" << std::setprecision(6) << '\n';
+    hub_limit = 0.;
   }
 
   // 3. A torque no fit carries.

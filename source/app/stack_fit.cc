@@ -488,12 +488,26 @@ namespace coaxfit
 
 
 
+  std::vector<double>
+  StackFit::radial_interferences(const bool largest) const
+  {
+    std::vector<double> radial;
+    for (unsigned int k = 0; k < stack_joints.size(); ++k)
+      radial.push_back(largest ? 0.5
+                                   * (parameters.fits[k].largest_interference
+                                      - parameters.fits[k].smoothing_loss) :
+                                 stack_joints[k].interference);
+    return radial;
+  }
+
+
+
   StackState
-  StackFit::part_assembly(const unsigned int first,
-                          const unsigned int last,
-                          const bool         largest,
-                          const double       heating,
-                          const bool         cooling) const
+  StackFit::part_assembly(const unsigned int         first,
+                          const unsigned int         last,
+                          const std::vector<double> &radial,
+                          const double               heating,
+                          const bool                 cooling) const
   {
     // Each body's compliance on the points of the joints inside the
     // part: the first body's bore and the last one's outside are free.
@@ -515,12 +529,7 @@ namespace coaxfit
       {
         StackJoint &joint = joints[j - first];
         joint.load_shift.reinit(0);
-        // The largest effective interference: U_max less the smoothing
-        // loss (radial).
-        if (largest)
-          joint.interference = 0.5
-                               * (parameters.fits[j].largest_interference
-                                  - parameters.fits[j].smoothing_loss);
+        joint.interference = radial[j];
         // Heated (cooled) as a whole by @p heating: the free bodies grow
         // apart by (alpha_outer - alpha_inner) dT R.
         if (heating != 0.)
@@ -560,27 +569,41 @@ namespace coaxfit
       return state.force[in_part].mean_value() * state.force[in_part].size()
              / (joint.weights.mean_value() * joint.weights.size());
     };
-    f.press_p_mean = p_mean(part_assembly(first, last, false));
+    const std::vector<double> in_use  = radial_interferences(false),
+                              largest = radial_interferences(true);
+    f.press_p_mean = p_mean(part_assembly(first, last, in_use));
     // F = nu_e N, the normal force N = p_mean pi D l over the joint's
     // length l.
     const double area = M_PI * f.diameter * joint.length();
     f.press_in_force  = f.press_in_friction_coefficient * f.press_p_mean * area;
     f.press_in_force_largest = f.press_in_friction_coefficient
-                               * p_mean(part_assembly(first, last, true))
+                               * p_mean(part_assembly(first, last, largest))
                                * area;
     f.press_in_force_estimate
       = f.press_in_friction_coefficient
         * plane_stress(first, last, false, true).pressure(in_part) * area;
 
-    // What the parts add to the joint's largest interference before it is
-    // made: the inner part's outside grown, the outer part's bore closed
-    // by the joints already made.
-    Vector<double> change(joint.n_points());
+    const Vector<double> growth = joining_growth(k, largest);
+    f.joining_growth = *std::max_element(growth.begin(), growth.end());
+  }
+
+
+
+  Vector<double>
+  StackFit::joining_growth(const unsigned int         k,
+                           const std::vector<double> &radial) const
+  {
+    // What the parts add to the joint's interference before it is made:
+    // the inner part's outside grown, the outer part's bore closed by the
+    // joints already made.
+    const auto [first, last] = parameters.joined_parts(k);
+    Vector<double> change(stack_joints[k].n_points());
     if (k > first)
-      change += part_surface(k, first, part_assembly(first, k, true));
+      change += part_surface(k, first, part_assembly(first, k, radial));
     if (last > k + 1)
-      change -= part_surface(k, k + 1, part_assembly(k + 1, last, true));
-    f.joining_growth = 2. * *std::max_element(change.begin(), change.end());
+      change -= part_surface(k, k + 1, part_assembly(k + 1, last, radial));
+    change *= 2.;
+    return change;
   }
 
 
@@ -1003,6 +1026,17 @@ namespace coaxfit
 
             // The diametral gap at each point (about 0 in contact).
             figures.gap.push_back(joint_gaps(k, joints[k].interference, field));
+            // What the parts joined before add to the joint's
+            // interference (the state of assembly).
+            if (!loaded)
+              {
+                std::vector<double> radial;
+                for (const StackJoint &joint : joints)
+                  radial.push_back(joint.interference);
+                const Vector<double> growth = joining_growth(k, radial);
+                figures.joining_growth.emplace_back(growth.begin(),
+                                                    growth.end());
+              }
             // Each relief's gap over its drawn clearance at its planes.
             figures.relief_gap.emplace_back();
             const auto planes
@@ -1036,8 +1070,13 @@ namespace coaxfit
   void
   StackFit::select_fits(std::ostream &out)
   {
+    std::vector<double> reach;
+    for (unsigned int k = 0; k < stack_joints.size(); ++k)
+      reach.push_back(joining_reach(k));
     auto chosen = std::make_shared<StackFitSelection>(
-      parameters, [this](const std::vector<double> &U) { return evaluate(U); });
+      parameters,
+      [this](const std::vector<double> &U) { return evaluate(U); },
+      reach);
     chosen->print(out);
     if (chosen->found())
       for (unsigned int j = 0; j < chosen->selected.size(); ++j)
@@ -1234,6 +1273,43 @@ namespace coaxfit
 
 
 
+  double
+  StackFit::joining_reach(const unsigned int k) const
+  {
+    const double D           = parameters.joint_diameter(k);
+    const double T           = parameters.operation.assembly_temperature;
+    const auto [first, last] = parameters.joined_parts(k);
+    // The parts' coefficients at an opening of 0.001 D plus the joining
+    // clearance (they depend on it only where a joint of a part opens as
+    // the part is heated or cooled).
+    const double opening
+      = 1e-3 * D
+        + joining_clearance_entry(parameters.operation.joining_clearance_text,
+                                  D);
+    double limit = std::numeric_limits<double>::infinity();
+    for (unsigned int b = k + 1; b <= last; ++b)
+      if (parameters.materials[b].temperature_limit > 0.)
+        limit = std::min(limit, parameters.materials[b].temperature_limit);
+    bool         known = false;
+    double       reach = 0.;
+    const double heat  = part_expansion(k, k + 1, last, false, opening);
+    if (heat > 0. && std::isfinite(limit))
+      {
+        known = true;
+        reach += D * heat * std::max(0., limit - T);
+      }
+    const double cool = part_expansion(k, first, k, true, opening);
+    if (cool > 0.)
+      {
+        known = true;
+        reach
+          += D * cool * std::max(0., T - OperationAnalysis::coldest_coolant);
+      }
+    return known ? reach : std::numeric_limits<double>::infinity();
+  }
+
+
+
   Vector<double>
   StackFit::part_surface(const unsigned int k,
                          const unsigned int first,
@@ -1286,10 +1362,11 @@ namespace coaxfit
     if (first == last || !(opening > 0.))
       return expansion(b, cooling);
 
-    const double         R = parameters.joint_diameter(k) / 2.;
-    const unsigned int   n = stack_joints[k].n_points();
-    const Vector<double> at_rest
-      = part_surface(k, first, part_assembly(first, last, true));
+    const double              R       = parameters.joint_diameter(k) / 2.;
+    const unsigned int        n       = stack_joints[k].n_points();
+    const std::vector<double> largest = radial_interferences(true);
+    const Vector<double>      at_rest
+      = part_surface(k, first, part_assembly(first, last, largest));
     // How far the joint opens per kelvin at dT (the bore growing, the
     // outside shrinking): the body's free growth and what its joint's
     // changed forces add, the least over the points.
@@ -1298,7 +1375,7 @@ namespace coaxfit
       const Vector<double> u
         = part_surface(k,
                        first,
-                       part_assembly(first, last, true, signed_dT, cooling));
+                       part_assembly(first, last, largest, signed_dT, cooling));
       double g = std::numeric_limits<double>::max();
       for (unsigned int i = 0; i < n; ++i)
         {

@@ -40,9 +40,11 @@ namespace coaxfit
 
 
 
-  StackFitSelection::StackFitSelection(const StackParameters &parameters,
-                                       const Evaluate        &evaluate)
-    : parameters(parameters)
+  StackFitSelection::StackFitSelection(const StackParameters     &parameters,
+                                       const Evaluate            &evaluate,
+                                       const std::vector<double> &reach)
+    : reach(reach)
+    , parameters(parameters)
   {
     const unsigned int J = parameters.n_joints();
     // The selected joints, and those that keep an ISO fit: their bands
@@ -127,6 +129,7 @@ namespace coaxfit
           relieved.push_back(k);
           n_relief_points.push_back(base[0].relief_gap[k].size());
         }
+    growth0                             = base[0].joining_growth;
     q0                                  = flatten(base);
     const std::vector<bool> base_regime = regime(base);
     for (const unsigned int k : selected)
@@ -147,6 +150,11 @@ namespace coaxfit
         slope.emplace_back(q.size());
         for (unsigned int i = 0; i < q.size(); ++i)
           slope.back()[i] = (q[i] - q0[i]) / h;
+        growth_slope.push_back(step[0].joining_growth);
+        for (unsigned int j = 0; j < J; ++j)
+          for (unsigned int i = 0; i < growth0[j].size(); ++i)
+            growth_slope.back()[j][i]
+              = (growth_slope.back()[j][i] - growth0[j][i]) / h;
       }
 
     // The criteria, in the order judge() takes them.
@@ -258,32 +266,34 @@ namespace coaxfit
 
 
 
-  bool
-  StackFitSelection::joinable(const unsigned int k, const IsoFit &fit) const
+  double
+  StackFitSelection::joining_growth(const unsigned int         k,
+                                    const std::vector<double> &U) const
   {
-    const Material &inner = parameters.materials[k],
-                   &outer = parameters.materials[k + 1];
-    const double D        = parameters.joint_diameter(k);
-    const double T_a      = parameters.operation.assembly_temperature;
-    bool         known    = false;
-    double       opening  = 0.;
-    if (outer.thermal_expansion > 0. && outer.temperature_limit > 0.)
+    if (growth0[k].empty())
+      return 0.;
+    std::vector<double> g = growth0[k];
+    for (unsigned int j = 0; j < selected.size(); ++j)
       {
-        known = true;
-        opening += D * outer.thermal_expansion
-                   * std::max(0., outer.temperature_limit - T_a);
+        const double dU = U[selected[j]] - U0[selected[j]];
+        for (unsigned int i = 0; i < g.size(); ++i)
+          g[i] += growth_slope[j][k][i] * dU;
       }
-    if (inner.joining_cooling_expansion() > 0.)
-      {
-        known = true;
-        opening += D * inner.joining_cooling_expansion()
-                   * std::max(0., T_a - OperationAnalysis::coldest_coolant);
-      }
-    return !known
-           || 1e-3 * fit.max_interference()
+    return std::max(0., *std::max_element(g.begin(), g.end()));
+  }
+
+
+
+  bool
+  StackFitSelection::joinable(const unsigned int         k,
+                              const std::vector<double> &U) const
+  {
+    const double D = parameters.joint_diameter(k);
+    return !std::isfinite(reach[k])
+           || U[k] + joining_growth(k, U)
                   + joining_clearance_entry(
                     parameters.operation.joining_clearance_text, D)
-                <= opening;
+                <= reach[k];
   }
 
 
@@ -617,11 +627,6 @@ namespace coaxfit
           share[j].push_back(ends);
         }
 
-    std::vector<std::vector<bool>> can_join(J_s);
-    for (unsigned int j = 0; j < J_s; ++j)
-      for (const IsoFit &f : candidates[j])
-        can_join[j].push_back(joinable(selected[j], f));
-
     std::vector<Combination> feasible;
     Combination              closest; // the largest margin, feasible or not
     closest.margin = -infinite;
@@ -658,10 +663,15 @@ namespace coaxfit
         Combination c;
         c.choice = choice;
         c.margin = touches ? margin : -infinite;
+        // Joined at the combination's largest interferences (the growth by
+        // the parts joined before rises with them).
+        const bool                ranks = touches && margin >= 1.;
+        const std::vector<double> U_max
+          = ranks ? corner_of(c, corners - 1) : std::vector<double>();
         for (unsigned int j = 0; j < J_s; ++j)
           {
             const IsoFit &f = candidates[j][choice[j]];
-            c.unjoinable += can_join[j][choice[j]] ? 0 : 1;
+            c.unjoinable += ranks && !joinable(selected[j], U_max) ? 1 : 0;
             c.not_preferred += is_preferred_fit(f.name) ? 0 : 1;
             c.width += f.max_interference() - f.min_interference();
           }
@@ -770,17 +780,22 @@ namespace coaxfit
           names.push_back(candidates[j][c.choice[j]].name);
         if (passed)
           {
+            const std::vector<double> U_max = corner_of(c, corners - 1);
             for (unsigned int j = 0; j < J_s; ++j)
               {
                 chosen.push_back(candidates[j][c.choice[j]]);
-                if (!joinable(selected[j], chosen.back()))
+                if (!joinable(selected[j], U_max))
                   notes.push_back(
                     "no combination could be joined by temperature: "
                     + parameters.joint_name(selected[j]) + "'s "
                     + chosen.back().name
-                    + " opens only with more heat or cold than its bodies "
-                      "take (the outer to its temperature limit, the inner "
-                      "to -196 C): it must be pressed in");
+                    + " opens only with more heat or cold than its parts "
+                      "take (the outer to its bodies' lowest temperature "
+                      "limit, the inner to -196 C; the parts joined before "
+                      "add "
+                    + figure(1e3 * joining_growth(selected[j], U_max))
+                    + " um to its largest interference): it must be pressed "
+                      "in");
               }
             checks = done;
             return;

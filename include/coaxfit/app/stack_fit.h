@@ -514,20 +514,35 @@ namespace coaxfit
     joining(unsigned int k, JointFigures &f) const;
 
     /**
+     * Each joint's radial effective interference (mm): the largest (an ISO
+     * fit's U_max less the smoothing loss) if @p largest, else the one in
+     * use.
+     */
+    std::vector<double>
+    radial_interferences(bool largest) const;
+    /**
      * The contact of the part-assembly of bodies @p first to @p last at
      * the assembly temperature (the others removed, the same meshes),
      * monolithically on the bodies' compliances on its joints' points,
      * unilateral (parts being pressed together cannot bond);
-     * its joints at their largest interferences if @p largest, else at
-     * those in use; heated as a whole by @p heating kelvin (negative:
+     * its joints at the radial interferences @p radial (mm, one per joint
+     * of the stack); heated as a whole by @p heating kelvin (negative:
      * cooled, with the cooling coefficients if @p cooling).
      */
     StackState
-    part_assembly(unsigned int first,
-                  unsigned int last,
-                  bool         largest,
-                  double       heating = 0.,
-                  bool         cooling = false) const;
+    part_assembly(unsigned int               first,
+                  unsigned int               last,
+                  const std::vector<double> &radial,
+                  double                     heating = 0.,
+                  bool                       cooling = false) const;
+    /**
+     * What the parts joined before joint @p k (Assembly/Order) add to its
+     * diametral interference at each of its points (mm), their joints at
+     * the radial interferences @p radial: the inner part's outside grown,
+     * the outer part's bore closed.
+     */
+    Vector<double>
+    joining_growth(unsigned int k, const std::vector<double> &radial) const;
     /**
      * The radial displacement (mm) at the points of joint @p k of a part
      * of at least two bodies from @p first in @p state (part_assembly()):
@@ -538,6 +553,15 @@ namespace coaxfit
     part_surface(unsigned int      k,
                  unsigned int      first,
                  const StackState &state) const;
+    /**
+     * How far joint @p k's parts as they are when it is made
+     * (Assembly/Order) open it at most (mm, diametral): the outer part
+     * heated to the lowest Temperature limit of its bodies and the inner
+     * part cooled to -196 C, each with its part_expansion(); infinite where
+     * neither is known (no coefficients, or no limit and no cooling).
+     */
+    double
+    joining_reach(unsigned int k) const;
     /** Body @p b's coefficient of expansion for heating or @p cooling. */
     double
     expansion(unsigned int b, bool cooling) const;

@@ -36,6 +36,12 @@ namespace coaxfit
      * closes, which is not modelled.
      */
     std::vector<std::vector<double>> relief_gap;
+    /**
+     * Per joint, at each point: what the parts joined before it add to its
+     * diametral interference (mm; StackFit::joining_growth()), in the
+     * state of assembly only (empty in service).
+     */
+    std::vector<std::vector<double>> joining_growth;
   };
 
   /**
@@ -60,8 +66,9 @@ namespace coaxfit
    *
    * The combinations (each joint's candidate_fits() whose smallest
    * interference exceeds its smoothing loss) are ranked: fewest fits that
-   * cannot be joined by temperature (joinable(); such a fit must be
-   * pressed in), then as the two-body selection ranks fits: fewest fits
+   * cannot be joined by temperature with the parts joined before
+   * (joinable() at the combination's largest interferences; such a fit
+   * must be pressed in), then as the two-body selection ranks fits: fewest fits
    * that are not preferred ones of ISO 286-1, then the widest tolerances
    * (the sum of the bands), then the largest least margin (the smallest ratio
    * of a safety to its requirement over the criteria and corners). The first is
@@ -103,9 +110,14 @@ namespace coaxfit
       return 5;
     }
 
-    /** Select for @p parameters, the stack evaluated by @p evaluate. */
-    StackFitSelection(const StackParameters &parameters,
-                      const Evaluate        &evaluate);
+    /**
+     * Select for @p parameters, the stack evaluated by @p evaluate; @p reach
+     * is how far each joint's parts open it at most for joining (mm,
+     * diametral; StackFit::joining_reach(), infinite where not known).
+     */
+    StackFitSelection(const StackParameters     &parameters,
+                      const Evaluate            &evaluate,
+                      const std::vector<double> &reach);
 
     /** A combination: a candidate index per selected joint. */
     struct Combination
@@ -157,15 +169,25 @@ namespace coaxfit
     std::string              conflict;     ///< why none, if none
 
     /**
-     * Whether joint @p k with @p fit can be joined by temperature (DIN
-     * 7190): its outer body heated to its temperature limit and its inner
-     * body cooled to -196 C (liquid nitrogen) together open more than its
-     * largest interference plus Operation/Joining clearance. The parts
-     * joined before are not counted (the run's joining figures count
-     * them). True where neither body's coefficients and limit are known.
+     * Whether joint @p k can be joined by temperature (DIN 7190) with the
+     * joints at the measured interferences @p U (mm, a combination's
+     * largest): its parts as they are when it is made (Assembly/Order),
+     * the outer heated to the lowest temperature limit of its bodies and
+     * the inner cooled to -196 C (liquid nitrogen), together open more
+     * than its interference, plus what the parts joined before add to it
+     * (joining_growth()), plus Operation/Joining clearance. True where
+     * neither part's coefficients and limit are known.
      */
     bool
-    joinable(unsigned int k, const IsoFit &fit) const;
+    joinable(unsigned int k, const std::vector<double> &U) const;
+
+    /**
+     * The linear model's largest growth over joint @p k's points of its
+     * diametral interference by the parts joined before it, at the
+     * measured interferences @p U (mm).
+     */
+    double
+    joining_growth(unsigned int k, const std::vector<double> &U) const;
 
     /** Whether fits were found and passed their FE check. */
     bool
@@ -202,6 +224,15 @@ namespace coaxfit
     json() const;
 
   private:
+    /** Per joint: how far its parts open it at most (mm, diametral). */
+    std::vector<double> reach;
+    /**
+     * Per joint, at each point: the linear model of joining_growth() at
+     * U_0, and its slope per selected joint (mm per mm).
+     */
+    std::vector<std::vector<double>>              growth0;
+    std::vector<std::vector<std::vector<double>>> growth_slope;
+
     /** The least ratio of a safety to its requirement, and where. */
     struct Judgement
     {

@@ -27,8 +27,16 @@
 //    put in place; a joint with its own Fit/<joint>/Case keeps it while
 //    the other varies (three cases).
 // 4. Bad input: exit 1, one line naming the entry, nothing written.
+// 5. Design/Mode = select with Fit/Case = all: the selection chooses in
+//    the case of the means (the same fits as a select run at Case =
+//    mean), the other cases run them: each case's U as ISO 286 gives it
+//    for the chosen fits, its pressures the compound cylinders' (1e-5),
+//    every slip safety at least the 1.5 the selection's FE check at the
+//    corners promised; a case's parameters.prm selects again and repeats
+//    it; a torque no fit carries gives the selection's answer and no case.
 
 #include <coaxfit/design/compound_cylinders.h>
+#include <coaxfit/parameters/iso286.h>
 
 #include "run_executable.h"
 #include "run_summary.h"
@@ -245,6 +253,116 @@ main()
     std::cout << '\n';
   }
 
+  std::cout << "\n5. Design/Mode = select with Fit/Case = all\n";
+  {
+    // The selection in the case of the means; the other cases run its
+    // fits. The same fits as a select run at Case = mean; each case's
+    // interferences as ISO 286 gives them for those fits, its pressures
+    // the compound cylinders'; the selection's FE check at the corners
+    // promised every case its slip safety of 1.5.
+    std::filesystem::remove_all("chosen");
+    std::filesystem::remove_all("chosen_mean");
+    r = run_coaxfit("chosen", quiet + "--set Design/Mode=select rings.prm");
+    const RunResult plain = run_coaxfit(
+      "chosen_mean",
+      quiet + "--set Design/Mode=select --set Fit/Case=mean rings.prm");
+    const nlohmann::json         mean = read_summary("chosen_mean");
+    std::vector<coaxfit::IsoFit> fits;
+    for (unsigned int k = 0; k < 2; ++k)
+      fits.push_back(coaxfit::iso_fit(
+        mean["selection"]["joints"][k]["fit"].get<std::string>(),
+        rings[k].outer_diameter));
+    std::cout << "exit " << r.exit_code << " (the select run at Case = mean "
+              << plain.exit_code << "); chosen/: " << entries("chosen")
+              << "\n  the select run's fits: " << fits[0].name << ", "
+              << fits[1].name << '\n';
+    table             = read_table("chosen");
+    double least_slip = 1e9;
+    for (const std::string c : {"min", "mean", "max", "min-max", "max-min"})
+      {
+        const nlohmann::json s = read_summary("chosen/" + c);
+        std::vector<double>  U(2);
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            const std::string joint_case
+              = c == "mean" ? "mean" :
+                              c.substr(k == 0 ? 0 : c.find('-') + 1, 3);
+            U[k] = 1e-3
+                   * (joint_case == "min" ? fits[k].min_interference() :
+                      joint_case == "max" ? fits[k].max_interference() :
+                                            0.5
+                                              * (fits[k].min_interference()
+                                                 + fits[k].max_interference()));
+          }
+        const coaxfit::CompoundCylinders exact(rings, U, 0., 0.);
+        std::cout << c << ": exit " << table[c]["exit_code"] << ", verdict "
+                  << table[c]["verdict"];
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            const nlohmann::json &j = s["joints"][k];
+            std::cout << "; " << joints[k] << " "
+                      << j["fit"].get<std::string>().substr(0, 14) << " U "
+                      << agreement(std::stod(table[c][joints[k] + "_U_mm"]),
+                                   U[k],
+                                   1e-12)
+                      << ", p " << std::setprecision(6) << exact.pressure(k)
+                      << " MPa "
+                      << agreement(j["pressure"]["mean"],
+                                   exact.pressure(k),
+                                   1e-5);
+            least_slip
+              = std::min(least_slip,
+                         std::stod(table[c][joints[k] + "_safety_slip"]));
+          }
+        std::cout << '\n';
+      }
+    std::cout << "  least slip safety over the cases " << std::setprecision(5)
+              << least_slip
+              << " (>= 1.5: " << (least_slip >= 1.5 ? "yes" : "NO") << ")\n"
+              << verdict_of("chosen") << '\n';
+    const auto text = [](const std::string &file) {
+      std::ifstream      in(file);
+      std::ostringstream s;
+      s << in.rdbuf();
+      return s.str();
+    };
+    std::cout << "  fit_selection.csv = mean/fit_selection.csv = the select "
+                 "run's: "
+              << (text("chosen/fit_selection.csv")
+                        == text("chosen/mean/fit_selection.csv")
+                      && text("chosen/fit_selection.csv")
+                           == text("chosen_mean/fit_selection.csv") ?
+                    "yes" :
+                    "NO")
+              << '\n';
+    // A case's parameters.prm selects again and runs that case.
+    std::filesystem::remove_all("chosen_again");
+    r = run_coaxfit("chosen_again", quiet + "chosen/min-max/parameters.prm");
+    const nlohmann::json a = read_summary("chosen_again"),
+                         b = read_summary("chosen/min-max");
+    std::cout << "min-max/parameters.prm: exit " << r.exit_code
+              << ", the mean pressures "
+              << agreement(a["joints"][0]["pressure"]["mean"],
+                           b["joints"][0]["pressure"]["mean"],
+                           1e-12)
+              << ", "
+              << agreement(a["joints"][1]["pressure"]["mean"],
+                           b["joints"][1]["pressure"]["mean"],
+                           1e-12)
+              << '\n';
+    // No fit carries the torque: the selection's answer, no case run.
+    std::filesystem::remove_all("none");
+    r = run_coaxfit("none",
+                    "--set Design/Mode=select --set 'Design/Required "
+                    "torque=1e6' rings.prm");
+    std::cout << "Required torque 1e6 N m: exit " << r.exit_code
+              << "; none/: " << entries("none") << "\n  "
+              << read_summary("none")["verdict"]["failed"][0]
+                   .get<std::string>()
+                   .substr(0, 60)
+              << '\n';
+  }
+
   std::cout << "\n4. Bad input\n";
   const std::vector<std::pair<std::string, std::string>> bad
     = {{"a joint's Case without an ISO fit",
@@ -255,7 +373,6 @@ main()
        {"every ISO joint with its own Case",
         "--set Fit/Shaft-Sleeve/Case=min --set Fit/Sleeve-Hub/Case=max "
         "rings.prm"},
-       {"with Design/Mode = select", "--set Design/Mode=select rings.prm"},
        {"in a --sweep", "--sweep 'Design/Slip safety=1.5,2' rings.prm"}};
   for (const auto &[what, arguments] : bad)
     {

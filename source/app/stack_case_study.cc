@@ -6,6 +6,7 @@
 #include <coaxfit/coupling/scene.h>
 #include <coaxfit/io/result_directory.h>
 #include <coaxfit/io/result_writers.h>
+#include <coaxfit/parameters/iso286.h>
 #include <coaxfit/parameters/parameter_checks.h>
 #include <coaxfit/parameters/stack_parameters.h>
 
@@ -31,11 +32,8 @@ namespace coaxfit
       std::vector<std::string> joint_case;
     };
 
-    /** What became of a case, and each joint's nominal U (mm). */
-    struct Row : StackStudyRun
-    {
-      std::vector<double> U;
-    };
+    /** What became of a case. */
+    using Row = StackStudyRun;
 
     /** The cases: min, mean and max, then the mixed corners. */
     std::vector<Case>
@@ -75,17 +73,22 @@ namespace coaxfit
       const std::vector<Case> &cases;
       const std::vector<Row>  &rows;
       const std::string        fits; ///< "Shaft-Sleeve H7/s6, ..."
+      const bool selected; ///< the fits chosen by Design/Mode = select
     };
 
-    /** The varied joints' ISO fits, as the headings name them. */
+    /**
+     * The varied joints' ISO fits @p iso_fits (one per joint), as the
+     * headings name them.
+     */
     std::string
     fits_text(const StackParameters           &base,
-              const std::vector<unsigned int> &varied)
+              const std::vector<unsigned int> &varied,
+              const std::vector<std::string>  &iso_fits)
     {
       std::string fits;
       for (const unsigned int k : varied)
         fits += (fits.empty() ? "" : ", ") + base.joint_name(k) + " "
-                + base.fits[k].iso_fit;
+                + (k < iso_fits.size() ? iso_fits[k] : std::string());
       return fits;
     }
 
@@ -258,7 +261,13 @@ namespace coaxfit
          << " at their smallest (min) or largest (max) interference, or all "
             "at their means; a mixed corner's name gives their cases in this "
             "order. The joints interact, so a body's stress may be largest "
-            "in a mixed corner.\n\n| figure |";
+            "in a mixed corner.";
+      if (study.selected)
+        md << " The selection (Design/Mode = select) chose the fits in the "
+              "case of the means: its choice is in fit_selection.csv (here "
+              "and in mean/) and in [mean/report.md](mean/report.md)'s "
+              "\"Fit selection\"; the other cases run those fits.";
+      md << "\n\n| figure |";
       for (const Case &c : study.cases)
         md << ' ' << c.name << " |";
       md << "\n|---|";
@@ -304,17 +313,21 @@ namespace coaxfit
   int
   StackCaseStudy::run()
   {
-    const StackParameters     base = read_stack_parameters(filename, overrides);
+    const StackParameters base = read_stack_parameters(filename, overrides);
+    // With Design/Mode = select the selected joints' fits are chosen first
+    // (in the case of the means) and then varied as well.
+    const bool                selecting = base.select_mode();
     std::vector<unsigned int> varied;
     for (unsigned int k = 0; k < base.n_joints(); ++k)
-      if (!base.fits[k].iso_fit.empty() && base.joint_cases[k].empty())
+      if ((!base.fits[k].iso_fit.empty() || (selecting && base.selected[k]))
+          && base.joint_cases[k].empty())
         varied.push_back(k);
     if (varied.empty())
       throw InputError(
         "parameter Fit/Case = all: every joint with an ISO fit gives its own "
         "Fit/<joint>/Case, so no band is left to run through; allowed: min, "
         "mean or max, or a joint with an ISO fit and no Case of its own");
-    const std::vector<Case> cases = cases_of(varied.size());
+    std::vector<Case> cases = cases_of(varied.size());
 
     // The directory: replaced as a whole; directly in it the study's
     // files, the cases, an earlier single run's files (an earlier study's
@@ -332,32 +345,79 @@ namespace coaxfit
       top.insert(Body::key_of(b) + ".vtu");
     ResultDirectory directory(target, all_result_file_names(), top);
 
-    std::vector<Row> rows(cases.size());
-    for (unsigned int i = 0; i < cases.size(); ++i)
+    std::vector<Row>         rows(cases.size());
+    std::vector<std::string> iso_fits;
+    for (const JointFit &f : base.fits)
+      iso_fits.push_back(f.iso_fit);
+    bool       chosen = false; // the selection's fits used
+    const auto run    = [&](const unsigned int i) {
+      const Case &c    = cases[i];
+      auto        with = overrides;
+      with.emplace_back("Fit/Case", "mean");
+      for (unsigned int j = 0; j < varied.size(); ++j)
+        with.emplace_back("Fit/" + base.joint_name(varied[j]) + "/Case",
+                          c.joint_case[j]);
+      // parameters.prm of the case names where it ends up.
+      with.emplace_back("Output/Directory", target + "/" + c.name);
+      rows[i] = run_stack_study_case(
+        [&]() {
+          StackParameters p = read_stack_parameters(filename, with);
+          p.case_name       = base.case_name + "_" + c.name;
+          // The fits the selection chose, at this case (its parameters.prm
+          // selects them again: the same choice).
+          if (chosen)
+            {
+              for (const unsigned int k : varied)
+                if (p.selected[k])
+                  p.use_iso_fit(k, iso_fit(iso_fits[k], p.joint_diameter(k)));
+              p.design_mode = "check";
+            }
+          return p;
+        },
+        directory.staging_path() + "/" + c.name,
+        verbose,
+        out);
+    };
+    if (selecting)
       {
-        const Case &c    = cases[i];
-        Row        &row  = rows[i];
-        auto        with = overrides;
-        with.emplace_back("Fit/Case", "mean");
-        for (unsigned int j = 0; j < varied.size(); ++j)
-          with.emplace_back("Fit/" + base.joint_name(varied[j]) + "/Case",
-                            c.joint_case[j]);
-        // parameters.prm of the case names where it ends up.
-        with.emplace_back("Output/Directory", target + "/" + c.name);
-        static_cast<StackStudyRun &>(row) = run_stack_study_case(
-          [&]() {
-            StackParameters p = read_stack_parameters(filename, with);
-            p.case_name       = base.case_name + "_" + c.name;
-            for (const JointFit &f : p.fits)
-              row.U.push_back(f.nominal_interference);
-            return p;
-          },
-          directory.staging_path() + "/" + c.name,
-          verbose,
-          out);
+        // The selection, in the case of the means (cases[1]); the other
+        // cases check its fits. Without fits the study is that case.
+        run(1);
+        const Row &mean = rows[1];
+        if (mean.no_fits)
+          {
+            // No fits: the study is the selection's answer, written as a
+            // select run writes it (no case to run).
+            const std::string from = directory.staging_path() + "/mean";
+            for (const auto &entry : fs::directory_iterator(from))
+              fs::rename(entry.path(),
+                         directory.staging_path() + "/"
+                           + entry.path().filename().string());
+            fs::remove(from);
+            out << "\ncoaxfit: Fit/Case = all of " << filename
+                << ": no case run, the selection found no fits\n"
+                << "  Verdict: FAILED: " << mean.failed.front() << '\n';
+            directory.commit(out);
+            out << "  results in " << target << std::endl;
+            return 0;
+          }
+        if (!mean.written || mean.exit_code != 0)
+          {
+            cases = {cases[1]};
+            rows  = {rows[1]};
+          }
+        else
+          {
+            chosen   = true;
+            iso_fits = mean.iso_fits;
+          }
       }
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      if (!(selecting && cases[i].name == "mean"))
+        run(i);
 
-    const Study       study{base, cases, rows, fits_text(base, varied)};
+    const Study study{
+      base, cases, rows, fits_text(base, varied, iso_fits), chosen};
     const std::string verdict = verdict_line(study);
     const auto        table   = figure_table(study);
     print_table(out, study, table, verdict, filename);
@@ -377,6 +437,11 @@ namespace coaxfit
     if (nothing)
       return code;
     write_fit_cases(directory.staging_path() + "/fit_cases.csv", study);
+    // A selection's table beside the study's, where a select run has it.
+    const std::string selection
+      = directory.staging_path() + "/mean/fit_selection.csv";
+    if (selecting && fs::exists(selection))
+      fs::copy_file(selection, directory.staging_path() + "/fit_selection.csv");
     write_report(directory.staging_path() + "/report.md",
                  study,
                  table,

@@ -24,9 +24,21 @@ namespace coaxfit
     try
       {
         const StackParameters parameters = read();
+        const auto            fits_of    = [&](const StackParameters &p) {
+          run.U.clear();
+          run.iso_fits.clear();
+          for (const JointFit &f : p.fits)
+            {
+              run.U.push_back(f.nominal_interference);
+              run.iso_fits.push_back(f.iso_fit);
+            }
+        };
+        fits_of(parameters);
         fs::create_directory(into);
         StackFit fit(parameters);
         run.exit_code = fit.run(verbose ? out : log, verbose, into);
+        // A selection's choice.
+        fits_of(fit.get_parameters());
         // A diverged process wrote nothing.
         run.written = fs::exists(into + "/summary.json");
         if (!run.written)

@@ -533,8 +533,9 @@ namespace coaxfit
                       "smallest or largest interference, each in turn) and "
                       "of their means, into subdirectories named by the "
                       "cases (min, mean, max, min-max, ...), with one table "
-                      "and one verdict. Joints given a Diametral "
-                      "interference take it.",
+                      "and one verdict (with Design/Mode = select: the "
+                      "fits chosen in the case of the means). Joints given "
+                      "a Diametral interference take it.",
                       Patterns::Selection("min|mean|max|all"));
     default_fit.press_in_friction_coefficient = 0.08;
     default_fit.declare_parameters(prm,
@@ -999,11 +1000,6 @@ namespace coaxfit
                              "Diametral interference is used as given); "
                              "allowed: nothing, or an ISO fit");
       }
-    if (fit_case == "all" && select_mode())
-      throw InputError(
-        "parameter Fit/Case = all with Design/Mode = select: the selection "
-        "judges every corner of the chosen fits' bands itself and runs them "
-        "at one case; allowed: min, mean or max");
     if (fit_case != "mean" && !iso && !select_mode())
       throw InputError("parameter Fit/Case = " + fit_case
                        + ": no joint has an ISO fit, whose smallest or "

@@ -21,6 +21,14 @@ namespace coaxfit
    * largest), then the mixed corners such as `min-max`; its parameters.prm
    * repeats it (Fit/Case = mean and each joint's `Case`).
    *
+   * With Design/Mode = select the selected joints vary too: the case of
+   * the means runs first and selects their fits; the other cases run
+   * those fits (StackParameters::use_iso_fit(), check mode; their
+   * parameters.prm selects again, which gives the same choice), and the
+   * selection's fit_selection.csv is put beside fit_cases.csv. If it
+   * finds none, the study is the selection's answer as a select run
+   * writes it, and no other case runs.
+   *
    * The output directory gets fit_cases.csv (a row per case: its exit
    * code, verdict, steps and the figures of stack_column_names()) and
    * report.md (the verdict over every case, a table of each joint's

@@ -105,6 +105,10 @@ namespace coaxfit
     std::vector<std::string> failed;  ///< the verdict's failed criteria
     std::vector<double>      values;  ///< stack_column_values()
     std::string              error;   ///< why it has no figures, if so
+    /** Each joint's nominal U (mm) as run; empty if not read. */
+    std::vector<double> U;
+    /** Each joint's ISO fit as run (a selection's choice); empty: none. */
+    std::vector<std::string> iso_fits;
   };
 
   /**

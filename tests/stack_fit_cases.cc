@@ -129,6 +129,30 @@ namespace
       s += (s.empty() ? "" : " ") + n;
     return s;
   }
+  /**
+   * Run the min-max case of the study in @p dir again from its
+   * parameters.prm into @p again; print its exit code and whether both
+   * joints' mean pressures are the case's (1e-12).
+   */
+  void
+  repeat(const std::string &dir, const std::string &again)
+  {
+    std::filesystem::remove_all(again);
+    const RunResult r
+      = run_coaxfit(again, quiet + dir + "/min-max/parameters.prm");
+    const nlohmann::json a = read_summary(again),
+                         b = read_summary(dir + "/min-max");
+    std::cout << "min-max/parameters.prm: exit " << r.exit_code
+              << ", the mean pressures "
+              << agreement(a["joints"][0]["pressure"]["mean"],
+                           b["joints"][0]["pressure"]["mean"],
+                           1e-12)
+              << ", "
+              << agreement(a["joints"][1]["pressure"]["mean"],
+                           b["joints"][1]["pressure"]["mean"],
+                           1e-12)
+              << '\n';
+  }
 } // namespace
 
 
@@ -196,20 +220,7 @@ main()
 
   std::cout << "\n3. Repeated, replaced, a joint's own Case\n";
   {
-    std::filesystem::remove_all("again");
-    r = run_coaxfit("again", quiet + "all/min-max/parameters.prm");
-    const nlohmann::json a = read_summary("again"),
-                         b = read_summary("all/min-max");
-    std::cout << "min-max/parameters.prm: exit " << r.exit_code
-              << ", the mean pressures "
-              << agreement(a["joints"][0]["pressure"]["mean"],
-                           b["joints"][0]["pressure"]["mean"],
-                           1e-12)
-              << ", "
-              << agreement(a["joints"][1]["pressure"]["mean"],
-                           b["joints"][1]["pressure"]["mean"],
-                           1e-12)
-              << '\n';
+    repeat("all", "again");
     r = run_coaxfit("all", quiet + "rings.prm");
     std::cout << "a second study into all/: exit " << r.exit_code << "; "
               << entries("all") << '\n';
@@ -336,20 +347,7 @@ main()
                     "NO")
               << '\n';
     // A case's parameters.prm selects again and runs that case.
-    std::filesystem::remove_all("chosen_again");
-    r = run_coaxfit("chosen_again", quiet + "chosen/min-max/parameters.prm");
-    const nlohmann::json a = read_summary("chosen_again"),
-                         b = read_summary("chosen/min-max");
-    std::cout << "min-max/parameters.prm: exit " << r.exit_code
-              << ", the mean pressures "
-              << agreement(a["joints"][0]["pressure"]["mean"],
-                           b["joints"][0]["pressure"]["mean"],
-                           1e-12)
-              << ", "
-              << agreement(a["joints"][1]["pressure"]["mean"],
-                           b["joints"][1]["pressure"]["mean"],
-                           1e-12)
-              << '\n';
+    repeat("chosen", "chosen_again");
     // No fit carries the torque: the selection's answer, no case run.
     std::filesystem::remove_all("none");
     r = run_coaxfit("none",

@@ -586,6 +586,13 @@ main()
               << " C (without the sleeve's growth "
               << 20. + (1e-3 * u6.max_interference() + 0.09) / (90. * 23e-6)
               << " C)" << std::setprecision(6) << '\n';
+    // Pressed in (Design/Joining = press): no heat, so the ranking of
+    // case 1, whatever the hub's limit.
+    const std::string    pressed = base + "/pressed";
+    const nlohmann::json p       = run_scene(
+      pressed, write_scene(pressed, scene(torque, "  set Joining = press\n")));
+    std::cout << "  Design/Joining = press: chosen " << fits_of(p) << ", notes "
+              << p["selection"]["notes"].size() << '\n';
     hub_limit = 0.;
   }
 

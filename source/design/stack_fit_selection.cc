@@ -288,6 +288,10 @@ namespace coaxfit
   StackFitSelection::joinable(const unsigned int         k,
                               const std::vector<double> &U) const
   {
+    // Joined by pressure oil or pressed in (Design/Joining): no heat.
+    if (parameters.joining != JoiningMethod::shrink
+        && parameters.joining != JoiningMethod::shrink_degreased)
+      return true;
     const double D = parameters.joint_diameter(k);
     return !std::isfinite(reach[k])
            || U[k] + joining_growth(k, U)

@@ -176,7 +176,8 @@ namespace coaxfit
      * the inner cooled to -196 C (liquid nitrogen), together open more
      * than its interference, plus what the parts joined before add to it
      * (joining_growth()), plus Operation/Joining clearance. True where
-     * neither part's coefficients and limit are known.
+     * neither part's coefficients and limit are known, and for joints
+     * made by pressure oil or pressed in (Design/Joining).
      */
     bool
     joinable(unsigned int k, const std::vector<double> &U) const;

@@ -33,7 +33,9 @@
 //    for the chosen fits, its pressures the compound cylinders' (1e-5),
 //    every slip safety at least the 1.5 the selection's FE check at the
 //    corners promised; a case's parameters.prm selects again and repeats
-//    it; a torque no fit carries gives the selection's answer and no case.
+//    it; a torque no fit carries gives the selection's answer and no case
+//    (named as the study, its parameters.prm the study's); a selected
+//    joint with its own Case keeps its chosen fit at that case throughout.
 
 #include <coaxfit/design/compound_cylinders.h>
 #include <coaxfit/parameters/iso286.h>
@@ -358,7 +360,28 @@ main()
               << read_summary("none")["verdict"]["failed"][0]
                    .get<std::string>()
                    .substr(0, 60)
-              << '\n';
+              << "\n  named " << read_summary("none")["case"];
+    // Its parameters.prm is the study's: run again, the same answer.
+    r = run_coaxfit("none", quiet + "none/parameters.prm");
+    std::cout << "; its parameters.prm run again: exit " << r.exit_code << ", "
+              << entries("none") << '\n';
+    // A selected joint with its own Case keeps the chosen fit at that case
+    // in every case, the other joint varies.
+    std::filesystem::remove_all("own_case");
+    r     = run_coaxfit("own_case",
+                    quiet
+                      + "--set Design/Mode=select --set "
+                            "Fit/Shaft-Sleeve/Case=max rings.prm");
+    table = read_table("own_case");
+    std::cout << "Shaft-Sleeve selected with its own Case max: exit "
+              << r.exit_code << "; U of " << fits[0].name << " at max "
+              << 1e-3 * fits[0].max_interference() << " mm:";
+    for (const std::string c : {"min", "mean", "max"})
+      std::cout << ' ' << c << ' ' << table[c]["Shaft-Sleeve_U_mm"];
+    std::cout << "; Sleeve-Hub:";
+    for (const std::string c : {"min", "mean", "max"})
+      std::cout << ' ' << c << ' ' << table[c]["Sleeve-Hub_U_mm"];
+    std::cout << '\n';
   }
 
   std::cout << "\n4. Bad input\n";

@@ -19,6 +19,13 @@
 //    and repeats the run from its parameters.prm;
 // 3. selects only Sleeve-Hub (Shaft-Sleeve keeps its 0.04 mm) the same
 //    way;
+// 3b. (2d-2f in the output) joins by temperature with the parts joined
+//    before: the hub limited to 150 C, the shaft's fit widening the
+//    sleeve it is heated onto (the compound cylinders of shaft and
+//    sleeve); then the shaft and sleeve cooled to -196 C as well (both at
+//    once: the inner part's temperature against the closed form of its
+//    thermal mismatch); a joint that keeps a Diametral interference judged
+//    too; pressed in: no heat;
 // 4. asks for a torque no fit carries: exit 0, the verdict FAILED naming
 //    the conflict, the selection written and no field;
 // 5. bad input: exit 1, one line naming the entry, nothing written.
@@ -61,6 +68,13 @@ namespace
    * 0.001 D, cannot be joined by temperature (case 2d).
    */
   double hub_limit = 0.;
+  /**
+   * Whether the shaft and the sleeve have expansion coefficients (heating
+   * 11.5e-6 and 18e-6, cooling 8.5e-6 and 14e-6 1/K), so that the shaft
+   * with the sleeve on it may be cooled to -196 C while the hub is heated
+   * to its limit (case 2e).
+   */
+  bool inner_cooled = false;
 
   /**
    * Design/Required axial force (N) and Application factor of the scene
@@ -87,6 +101,12 @@ namespace
         << "\n    set nu = " << rings[b].nu
         << "\n    set Yield strength = " << yield[b]
         << (b == 2 ? "\n    set Thermal expansion = 23e-6" : "")
+        << (b < 2 && inner_cooled ?
+              std::string("\n    set Thermal expansion = ")
+                + (b == 0 ? "11.5e-6" : "18e-6")
+                + "\n    set Cooling expansion = "
+                + (b == 0 ? "8.5e-6" : "14e-6") :
+              std::string())
         << (b == 2 && hub_limit > 0. ?
               "\n    set Temperature limit = " + std::to_string(hub_limit) :
               "")
@@ -171,6 +191,37 @@ namespace
     return 20. + (U_hub + growth + 0.09) / (90. * 23e-6);
   }
 
+  /**
+   * How far (mm, diametral) cooling the shaft with the sleeve on it from
+   * 20 C to -196 C shrinks the sleeve's outside: its free shrinkage
+   * 14e-6 * 216 * 45 mm, less what the shaft's joint pushes it out as the
+   * sleeve shrinks onto the shaft by (14e-6 - 8.5e-6) * 216 * 30 mm more
+   * (the compound cylinders of those two rings at that interference).
+   */
+  double
+  inner_cooling_opening()
+  {
+    const double                     dT = 216.;
+    const coaxfit::CompoundCylinders pushed(
+      {rings[0], rings[1]}, {2. * (14e-6 - 8.5e-6) * dT * 30.}, 0., 0., true);
+    return 2. * (14e-6 * dT * 45. - pushed.radial_displacement(1, 45.));
+  }
+
+  /**
+   * Whether the closed form joins Sleeve-Hub by temperature with the
+   * largest interferences @p U_shaft and @p U_hub (mm): the hub heated to
+   * its limit, and with inner_cooled the inner part cooled to -196 C at
+   * once, open more than it needs (hub_joining_temperature()).
+   */
+  bool
+  hub_joinable(const double U_shaft, const double U_hub)
+  {
+    const double need
+      = (hub_joining_temperature(U_shaft, U_hub) - 20.) * 90. * 23e-6;
+    return need <= (hub_limit - 20.) * 90. * 23e-6
+                     + (inner_cooled ? inner_cooling_opening() : 0.);
+  }
+
   /** A combination of fits judged by the closed form. */
   struct Choice
   {
@@ -236,13 +287,10 @@ namespace
                       += f[k]->max_interference() - f[k]->min_interference();
                   }
               c.margin = margin;
-              if (hub_limit > 0. && chosen[1])
-                c.unjoinable
-                  = hub_joining_temperature(chosen[0] ?
-                                              1e-3 * a.max_interference() :
-                                              fixed[0],
-                                            1e-3 * b.max_interference())
-                    > hub_limit;
+              if (hub_limit > 0. && (chosen[1] || fixed[1] > 0.))
+                c.unjoinable = !hub_joinable(
+                  chosen[0] ? 1e-3 * a.max_interference() : fixed[0],
+                  chosen[1] ? 1e-3 * b.max_interference() : fixed[1]);
               feasible.push_back(c);
             }
         }
@@ -586,6 +634,89 @@ main()
               << " C (without the sleeve's growth "
               << 20. + (1e-3 * u6.max_interference() + 0.09) / (90. * 23e-6)
               << " C)" << std::setprecision(6) << '\n';
+    // 2e. The shaft with the sleeve on it may be cooled to -196 C as well
+    // (both at once, DIN 7190): more combinations join; where the hub at
+    // its limit is not enough alone, the run gives the inner part's
+    // temperature for both at once.
+    inner_cooled = true;
+    {
+      std::cout << "2e. and the shaft and the sleeve cooled to -196 C as "
+                   "well: the inner part opens "
+                << std::setprecision(5) << inner_cooling_opening()
+                << " mm (closed form)" << std::setprecision(6) << '\n';
+      const std::string    cooled = base + "/cooled";
+      const nlohmann::json c
+        = run_scene(cooled, write_scene(cooled, scene(torque)));
+      const std::vector<Choice> cooled_ranking
+        = closed_form_ranking({true, true}, {0., 0.}, torque, n);
+      unsigned int cannot = 0;
+      for (const Choice &choice : cooled_ranking)
+        cannot += choice.unjoinable;
+      const std::string cooled_first = cooled_ranking.empty() ?
+                                         "none" :
+                                         cooled_ranking[0].fits[0].name + " + "
+                                           + cooled_ranking[0].fits[1].name;
+      std::cout << "  " << cannot
+                << " feasible combinations cannot be joined (closed form)\n"
+                << "  chosen: " << fits_of(c)
+                << "; the closed form's first: " << cooled_first
+                << (fits_of(c) == cooled_first ? " (the same)" : " (DIFFERS)")
+                << '\n';
+      const auto &joining = c["joints"][1]["joining"];
+      const auto  largest = [&](const unsigned int k) {
+        return 1e-3
+               * coaxfit::iso_fit(
+                   c["selection"]["joints"][k]["fit"].get<std::string>(),
+                   rings[k].outer_diameter)
+                   .max_interference();
+      };
+      const double need
+        = (hub_joining_temperature(largest(0), largest(1)) - 20.) * 90. * 23e-6;
+      const double left = need - (hub_limit - 20.) * 90. * 23e-6;
+      std::cout << "  the run heats the hub to " << std::setprecision(5)
+                << joining["heat_outer_to"].get<double>()
+                << " C alone, above its limit: " << joining["heat_above_limit"];
+      if (left > 0.)
+        {
+          const double exact = 20. - left / (inner_cooling_opening() / 216.);
+          std::cout << "; both at once: the hub at " << hub_limit
+                    << " C and the inner part cooled to "
+                    << joining["both_cool_inner_to"].get<double>()
+                    << " C (closed form " << exact << " C, "
+                    << agreement(joining["both_cool_inner_to"].get<double>(),
+                                 exact,
+                                 1e-4)
+                    << ")";
+        }
+      std::cout << std::setprecision(6) << '\n';
+    }
+    inner_cooled = false;
+
+    // 2f. Only Shaft-Sleeve chosen, Sleeve-Hub keeps 0.104 mm: the hub's
+    // joint is judged too, its growth set by the shaft's fit.
+    {
+      const std::string kept = base + "/kept_plain";
+      std::string       text
+        = scene(torque, "  set Selected joints = Shaft-Sleeve\n");
+      text.replace(text.find("  set Friction"),
+                   0,
+                   "  subsection Sleeve-Hub\n    set Diametral interference = "
+                   "0.104\n  end\n");
+      std::cout << "2f. Design/Selected joints = Shaft-Sleeve, Sleeve-Hub "
+                   "keeps 0.104 mm\n";
+      const nlohmann::json      k = run_scene(kept, write_scene(kept, text));
+      const std::vector<Choice> kept_ranking
+        = closed_form_ranking({true, false}, {0., 0.104}, torque, n);
+      const std::string kept_first
+        = kept_ranking.empty() ? "none" : kept_ranking[0].fits[0].name;
+      std::cout << "  chosen: " << fits_of(k)
+                << "; the closed form's first: " << kept_first
+                << (fits_of(k) == kept_first ? " (the same)" : " (DIFFERS)")
+                << "; the run heats the hub to " << std::setprecision(5)
+                << k["joints"][1]["joining"]["heat_outer_to"].get<double>()
+                << " C" << std::setprecision(6) << '\n';
+    }
+
     // Pressed in (Design/Joining = press): no heat, so the ranking of
     // case 1, whatever the hub's limit.
     const std::string    pressed = base + "/pressed";

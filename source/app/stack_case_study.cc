@@ -16,6 +16,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
@@ -88,8 +89,48 @@ namespace coaxfit
       std::string fits;
       for (const unsigned int k : varied)
         fits += (fits.empty() ? "" : ", ") + base.joint_name(k) + " "
-                + (k < iso_fits.size() ? iso_fits[k] : std::string());
+                + (k < iso_fits.size() && !iso_fits[k].empty() ?
+                     iso_fits[k] :
+                     std::string("(not chosen)"));
       return fits;
+    }
+
+    /**
+     * A selection's answer moved from the case of the means into the
+     * study's directory @p dir: named as the study @p base (summary.json's
+     * case, report.md's heading), its parameters.prm the study's (run
+     * again, it gives the same answer).
+     */
+    void
+    name_the_study(const std::string &dir, const StackParameters &base)
+    {
+      const std::string mean = base.case_name + "_mean";
+      {
+        std::ifstream  in(dir + "/summary.json");
+        nlohmann::json j = nlohmann::json::parse(in);
+        j["case"]        = base.case_name;
+        std::ofstream o  = open_result_file(dir + "/summary.json");
+        o << j.dump(2) << '\n';
+        close_result_file(o, dir + "/summary.json");
+      }
+      if (fs::exists(dir + "/report.md"))
+        {
+          std::ifstream      in(dir + "/report.md");
+          std::ostringstream text;
+          text << in.rdbuf();
+          std::string       report  = text.str();
+          const std::string heading = "# coaxfit: " + mean + "\n";
+          if (report.rfind(heading, 0) == 0)
+            report.replace(0,
+                           heading.size(),
+                           "# coaxfit: " + base.case_name + "\n");
+          std::ofstream o = open_result_file(dir + "/report.md");
+          o << report;
+          close_result_file(o, dir + "/report.md");
+        }
+      std::ofstream o = open_result_file(dir + "/parameters.prm");
+      o << base.used_prm;
+      close_result_file(o, dir + "/parameters.prm");
     }
 
     /**
@@ -367,7 +408,7 @@ namespace coaxfit
           // selects them again: the same choice).
           if (chosen)
             {
-              for (const unsigned int k : varied)
+              for (unsigned int k = 0; k < p.n_joints(); ++k)
                 if (p.selected[k])
                   p.use_iso_fit(k, iso_fit(iso_fits[k], p.joint_diameter(k)));
               p.design_mode = "check";
@@ -394,6 +435,7 @@ namespace coaxfit
                          directory.staging_path() + "/"
                            + entry.path().filename().string());
             fs::remove(from);
+            name_the_study(directory.staging_path(), base);
             out << "\ncoaxfit: Fit/Case = all of " << filename
                 << ": no case run, the selection found no fits\n"
                 << "  Verdict: FAILED: " << mean.failed.front() << '\n';
@@ -401,15 +443,17 @@ namespace coaxfit
             out << "  results in " << target << std::endl;
             return 0;
           }
-        if (!mean.written || mean.exit_code != 0)
+        // The fits it chose (also where their run did not converge);
+        // none known if the case was refused: then only that case.
+        chosen = mean.iso_fits.size() == base.n_joints();
+        for (unsigned int k = 0; chosen && k < base.n_joints(); ++k)
+          chosen = !base.selected[k] || !mean.iso_fits[k].empty();
+        if (chosen)
+          iso_fits = mean.iso_fits;
+        else
           {
             cases = {cases[1]};
             rows  = {rows[1]};
-          }
-        else
-          {
-            chosen   = true;
-            iso_fits = mean.iso_fits;
           }
       }
     for (unsigned int i = 0; i < cases.size(); ++i)

@@ -66,7 +66,10 @@ namespace coaxfit
       s << " + clearance " << f.joining_clearance << " mm, DIN 7190): ";
       if (!std::isnan(f.heat_outer_to))
         s << "heat " << outer << " to " << celsius(f.heat_outer_to)
-          << (f.heat_above_limit ? " (above its temperature limit)" : "");
+          << (f.heat_above_limit ?
+                " (above " + f.heat_limit_body + "'s temperature limit "
+                  + celsius(f.heat_limit) + ")" :
+                "");
       if (!std::isnan(f.heat_outer_to) && !std::isnan(f.cool_inner_to))
         s << " or ";
       if (!std::isnan(f.cool_inner_to))
@@ -78,6 +81,12 @@ namespace coaxfit
                                   " (with its heating coefficient: no "
                                   "Cooling expansion given, colder in fact)" :
                                   "");
+      if (!std::isnan(f.both_cool_inner_to))
+        s << "; or both: " << outer << " at " << celsius(f.heat_limit)
+          << " and " << inner << " cooled to " << celsius(f.both_cool_inner_to)
+          << (f.both_cool_inner_to < OperationAnalysis::coldest_coolant ?
+                " (not reachable: below -196 C)" :
+                "");
       return s.str();
     }
 

@@ -93,12 +93,15 @@ namespace coaxfit
                        {{"at_mid_plane", number_or_null(f.alone_p_mid)},
                         {"mean", number_or_null(f.alone_p_mean)}}},
                       {"staggered_steps", f.alone_steps}};
-      j["joining"] = {{"interference_max", f.joining_interference},
-                      {"interference_from_parts", f.joining_growth},
-                      {"clearance", f.joining_clearance},
-                      {"heat_outer_to", number_or_null(f.heat_outer_to)},
-                      {"heat_above_limit", f.heat_above_limit},
-                      {"cool_inner_to", number_or_null(f.cool_inner_to)}};
+      j["joining"]
+        = {{"interference_max", f.joining_interference},
+           {"interference_from_parts", f.joining_growth},
+           {"clearance", f.joining_clearance},
+           {"heat_outer_to", number_or_null(f.heat_outer_to)},
+           {"heat_above_limit", f.heat_above_limit},
+           {"heat_limit", number_or_null(f.heat_limit)},
+           {"both_cool_inner_to", number_or_null(f.both_cool_inner_to)},
+           {"cool_inner_to", number_or_null(f.cool_inner_to)}};
       // Without the inner body's expansion nothing is known of cooling.
       j["joining"]["cool_reachable"]
         = std::isnan(f.cool_inner_to) ? Json(nullptr) : Json(f.cool_reachable);

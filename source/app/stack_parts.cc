@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 // The stack's parts on their own (StackFit): each joint alone, the
 // part-assemblies of Assembly/Order, and from them each joint's press-in
@@ -204,13 +205,9 @@ namespace coaxfit
       = heat_alpha > 0. ?
           joining_temperature(true, U, f.joining_clearance, D, heat_alpha, T) :
           unknown;
-    f.heat_above_limit = false;
-    for (unsigned int b = k + 1; b <= last; ++b)
-      f.heat_above_limit
-        = f.heat_above_limit
-          || (parameters.materials[b].temperature_limit > 0.
-              && f.heat_outer_to > parameters.materials[b].temperature_limit);
-    f.cooling_from_heating = false;
+    std::tie(f.heat_limit, f.heat_limit_body) = heating_limit(k);
+    f.heat_above_limit                        = f.heat_outer_to > f.heat_limit;
+    f.cooling_from_heating                    = false;
     for (unsigned int b = first; b <= k; ++b)
       f.cooling_from_heating
         = f.cooling_from_heating
@@ -220,6 +217,19 @@ namespace coaxfit
           joining_temperature(false, U, f.joining_clearance, D, cool_alpha, T) :
           unknown;
     f.cool_reachable = !(f.cool_inner_to < OperationAnalysis::coldest_coolant);
+
+    // Neither alone: both, the outer part at its limit and the inner part
+    // cooled by what is left (DIN 7190 allows both at once).
+    f.both_cool_inner_to = unknown;
+    if (f.heat_above_limit && !f.cool_reachable)
+      {
+        const double heated
+          = part_opening(k, k + 1, last, false, f.heat_limit - T);
+        const double left  = opening - std::max(0., heated);
+        const double alpha = part_expansion(k, first, k, true, left);
+        if (alpha > 0.)
+          f.both_cool_inner_to = T - left / (alpha * D);
+      }
   }
 
 
@@ -227,36 +237,50 @@ namespace coaxfit
   double
   StackFit::joining_reach(const unsigned int k) const
   {
-    const double D           = parameters.joint_diameter(k);
     const double T           = parameters.operation.assembly_temperature;
     const auto [first, last] = parameters.joined_parts(k);
-    // The parts' coefficients at an opening of 0.001 D plus the joining
-    // clearance (they depend on it only where a joint of a part opens as
-    // the part is heated or cooled).
-    const double opening
-      = 1e-3 * D
-        + joining_clearance_entry(parameters.operation.joining_clearance_text,
-                                  D);
-    double limit = std::numeric_limits<double>::infinity();
-    for (unsigned int b = k + 1; b <= last; ++b)
-      if (parameters.materials[b].temperature_limit > 0.)
-        limit = std::min(limit, parameters.materials[b].temperature_limit);
+    const auto [limit, body] = heating_limit(k);
+    // Heating without a limit opens any joint: not judged.
+    if (!std::isfinite(limit))
+      return std::numeric_limits<double>::infinity();
+    // The openings reached: the outer part heated to its limit, the inner
+    // one cooled to -196 C (each part as a whole, its joints opening where
+    // its bodies expand differently).
     bool         known = false;
     double       reach = 0.;
-    const double heat  = part_expansion(k, k + 1, last, false, opening);
-    if (heat > 0. && std::isfinite(limit))
+    const double heat
+      = part_opening(k, k + 1, last, false, std::max(0., limit - T));
+    if (!std::isnan(heat))
       {
         known = true;
-        reach += D * heat * std::max(0., limit - T);
+        reach += std::max(0., heat);
       }
-    const double cool = part_expansion(k, first, k, true, opening);
-    if (cool > 0.)
+    const double cool = part_opening(
+      k, first, k, true, std::max(0., T - OperationAnalysis::coldest_coolant));
+    if (!std::isnan(cool))
       {
         known = true;
-        reach
-          += D * cool * std::max(0., T - OperationAnalysis::coldest_coolant);
+        reach += std::max(0., cool);
       }
     return known ? reach : std::numeric_limits<double>::infinity();
+  }
+
+
+
+  std::pair<double, std::string>
+  StackFit::heating_limit(const unsigned int k) const
+  {
+    const unsigned int last  = parameters.joined_parts(k).second;
+    double             limit = std::numeric_limits<double>::infinity();
+    std::string        body;
+    for (unsigned int b = k + 1; b <= last; ++b)
+      if (parameters.materials[b].temperature_limit > 0.
+          && parameters.materials[b].temperature_limit < limit)
+        {
+          limit = parameters.materials[b].temperature_limit;
+          body  = parameters.bodies[b];
+        }
+    return {limit, body};
   }
 
 
@@ -296,58 +320,72 @@ namespace coaxfit
 
 
   double
+  StackFit::part_opening(const unsigned int k,
+                         const unsigned int first,
+                         const unsigned int last,
+                         const bool         cooling,
+                         const double       dT) const
+  {
+    for (unsigned int b = first; b <= last; ++b)
+      if (!(expansion(b, cooling) > 0.))
+        return std::numeric_limits<double>::quiet_NaN();
+    // The surface at joint k: the outer part's bore or the inner part's
+    // outside, of the joint's own body.
+    const bool         bore = first == k + 1;
+    const unsigned int b    = bore ? first : last;
+    const double       D    = parameters.joint_diameter(k);
+    if (first == last || !(dT > 0.))
+      return D * expansion(b, cooling) * dT;
+
+    // The body's free growth and what its joint's changed forces add, the
+    // least over the points.
+    const std::vector<double> largest = radial_interferences(true);
+    const Vector<double>      at_rest
+      = part_surface(k, first, part_assembly(first, last, largest));
+    const double         signed_dT = cooling ? -dT : dT;
+    const Vector<double> u
+      = part_surface(k,
+                     first,
+                     part_assembly(first, last, largest, signed_dT, cooling));
+    double least = std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < u.size(); ++i)
+      {
+        const double moved
+          = u[i] - at_rest[i] + expansion(b, cooling) * signed_dT * D / 2.;
+        least = std::min(least, bore ? moved : -moved);
+      }
+    return 2. * least;
+  }
+
+
+
+  double
   StackFit::part_expansion(const unsigned int k,
                            const unsigned int first,
                            const unsigned int last,
                            const bool         cooling,
                            const double       opening) const
   {
-    const double unknown = std::numeric_limits<double>::quiet_NaN();
-    for (unsigned int b = first; b <= last; ++b)
-      if (!(expansion(b, cooling) > 0.))
-        return unknown;
-    // The surface at joint k: the outer part's bore or the inner part's
-    // outside, of the joint's own body.
-    const bool         bore = first == k + 1;
-    const unsigned int b    = bore ? first : last;
-    if (first == last || !(opening > 0.))
-      return expansion(b, cooling);
-
-    const double              R       = parameters.joint_diameter(k) / 2.;
-    const unsigned int        n       = stack_joints[k].n_points();
-    const std::vector<double> largest = radial_interferences(true);
-    const Vector<double>      at_rest
-      = part_surface(k, first, part_assembly(first, last, largest));
-    // How far the joint opens per kelvin at dT (the bore growing, the
-    // outside shrinking): the body's free growth and what its joint's
-    // changed forces add, the least over the points.
+    const double D = parameters.joint_diameter(k);
+    // The coefficient g(dT) = opening(dT) / (D dT) at the temperature
+    // change dT = opening / (D g(dT)): linear while the part's joints stay
+    // closed, a few fixed-point steps where one opens.
     const auto per_kelvin = [&](const double dT) {
-      const double         signed_dT = cooling ? -dT : dT;
-      const Vector<double> u
-        = part_surface(k,
-                       first,
-                       part_assembly(first, last, largest, signed_dT, cooling));
-      double g = std::numeric_limits<double>::max();
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          const double moved
-            = u[i] - at_rest[i] + expansion(b, cooling) * signed_dT * R;
-          g = std::min(g, (bore ? moved : -moved) / dT);
-        }
-      return g;
+      return part_opening(k, first, last, cooling, dT) / (D * dT);
     };
-    // The temperature change dT = opening / (2 g(dT)): linear while the
-    // part's joints stay closed, a few fixed-point steps where one opens.
-    double dT = 1., g = per_kelvin(dT);
+    double g = per_kelvin(1.);
+    if (first == last || !(opening > 0.))
+      return g;
+    double dT = 1.;
     for (unsigned int step = 0; step < 20 && g > 0.; ++step)
       {
-        const double next = opening / (2. * g);
+        const double next = opening / (D * g);
         const bool   done = std::abs(next - dT) <= 1e-10 * next;
         dT                = next;
         if (done)
           break;
         g = per_kelvin(dT);
       }
-    return g > 0. ? g / R : unknown;
+    return g > 0. ? g : std::numeric_limits<double>::quiet_NaN();
   }
 } // namespace coaxfit

@@ -294,7 +294,10 @@ namespace coaxfit
          << (std::isnan(f.heat_outer_to) ?
                std::string("no thermal expansion") :
                design_figure(f.heat_outer_to)
-                 + (f.heat_above_limit ? " (above its temperature limit)" : ""))
+                 + (f.heat_above_limit ?
+                      " (above " + f.heat_limit_body + "'s limit "
+                        + design_figure(f.heat_limit) + ")" :
+                      ""))
          << " | "
          << (std::isnan(f.cool_inner_to) ?
                std::string("no thermal expansion") :
@@ -307,6 +310,19 @@ namespace coaxfit
                       " (heating coefficient: colder in fact)" :
                       ""))
          << " |\n";
+    // Neither alone: both at once.
+    for (const JointFigures &f : joints_out)
+      if (!std::isnan(f.both_cool_inner_to))
+        md << "\n"
+           << f.name
+           << ": neither alone; both at once: " << part_text(f.press_outer_part)
+           << " at its limit " << design_figure(f.heat_limit) << " C and "
+           << part_text(f.press_inner_part) << " cooled to "
+           << design_figure(f.both_cool_inner_to) << " C"
+           << (f.both_cool_inner_to < OperationAnalysis::coldest_coolant ?
+                 " (not reachable)" :
+                 "")
+           << ".\n";
 
     md << "\n## Pressing (Assembly/Order: " << p.order_text
        << ")\n\nEach joint pressed lengthwise at the assembly temperature: "

@@ -284,6 +284,22 @@ namespace coaxfit
 
 
 
+  std::vector<unsigned int>
+  StackFitSelection::unjoinable_joints(const std::vector<double> &U) const
+  {
+    // Every joint with an interference: the selected ones and those that
+    // keep theirs (the parts joined before change what they need).
+    std::vector<unsigned int> which;
+    for (unsigned int k = 0; k < U.size(); ++k)
+      if ((U[k] > 0.
+           || std::find(selected.begin(), selected.end(), k) != selected.end())
+          && !joinable(k, U))
+        which.push_back(k);
+    return which;
+  }
+
+
+
   bool
   StackFitSelection::joinable(const unsigned int         k,
                               const std::vector<double> &U) const
@@ -672,10 +688,11 @@ namespace coaxfit
         const bool                ranks = touches && margin >= 1.;
         const std::vector<double> U_max
           = ranks ? corner_of(c, corners - 1) : std::vector<double>();
+        if (ranks)
+          c.unjoinable = unjoinable_joints(U_max).size();
         for (unsigned int j = 0; j < J_s; ++j)
           {
             const IsoFit &f = candidates[j][choice[j]];
-            c.unjoinable += ranks && !joinable(selected[j], U_max) ? 1 : 0;
             c.not_preferred += is_preferred_fit(f.name) ? 0 : 1;
             c.width += f.max_interference() - f.min_interference();
           }
@@ -784,22 +801,24 @@ namespace coaxfit
           names.push_back(candidates[j][c.choice[j]].name);
         if (passed)
           {
-            const std::vector<double> U_max = corner_of(c, corners - 1);
             for (unsigned int j = 0; j < J_s; ++j)
+              chosen.push_back(candidates[j][c.choice[j]]);
+            const std::vector<double> U_max = corner_of(c, corners - 1);
+            for (const unsigned int k : unjoinable_joints(U_max))
               {
-                chosen.push_back(candidates[j][c.choice[j]]);
-                if (!joinable(selected[j], U_max))
-                  notes.push_back(
-                    "no combination could be joined by temperature: "
-                    + parameters.joint_name(selected[j]) + "'s "
-                    + chosen.back().name
-                    + " opens only with more heat or cold than its parts "
-                      "take (the outer to its bodies' lowest temperature "
-                      "limit, the inner to -196 C; the parts joined before "
-                      "add "
-                    + figure(1e3 * joining_growth(selected[j], U_max))
-                    + " um to its largest interference): it must be pressed "
-                      "in");
+                const auto at = std::find(selected.begin(), selected.end(), k);
+                notes.push_back(
+                  "no combination could be joined by temperature: "
+                  + parameters.joint_name(k) + " with "
+                  + (at != selected.end() ? chosen[at - selected.begin()].name :
+                                            "U " + figure(U_max[k]) + " mm")
+                  + " opens only with more heat and cold than its parts "
+                    "take (the outer heated to its bodies' lowest "
+                    "temperature limit and the inner cooled to -196 C at "
+                    "once; the parts joined before add "
+                  + figure(1e3 * joining_growth(k, U_max))
+                  + " um to its largest interference): it must be pressed "
+                    "in");
               }
             checks = done;
             return;

@@ -17,6 +17,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coaxfit
@@ -94,8 +95,19 @@ namespace coaxfit
     double cool_inner_to     = 0.; ///< C; NaN: no expansion coefficient known
     /** The inner body's heating coefficient was used (no Cooling expansion). */
     bool cooling_from_heating = false;
-    /** The outer body's temperature would exceed its temperature limit. */
+    /** The outer part's lowest Temperature limit (C; infinite: none). */
+    double heat_limit = std::numeric_limits<double>::infinity();
+    /** The body of the outer part with that limit. */
+    std::string heat_limit_body;
+    /** The outer part's temperature would exceed heat_limit. */
     bool heat_above_limit = false;
+    /**
+     * C: where neither heating to heat_limit nor cooling to -196 C opens
+     * the joint alone, the temperature the inner part is cooled to while
+     * the outer part is heated to heat_limit (NaN: not needed, or not
+     * known).
+     */
+    double both_cool_inner_to = std::numeric_limits<double>::quiet_NaN();
     /** The cooling temperature is not below -196 C (liquid nitrogen). */
     bool cool_reachable = true;
     /** @} */
@@ -557,11 +569,35 @@ namespace coaxfit
      * How far joint @p k's parts as they are when it is made
      * (Assembly/Order) open it at most (mm, diametral): the outer part
      * heated to the lowest Temperature limit of its bodies and the inner
-     * part cooled to -196 C, each with its part_expansion(); infinite where
-     * neither is known (no coefficients, or no limit and no cooling).
+     * part cooled to -196 C (part_opening() of each, both at once);
+     * infinite where the outer part has no limit (heating opens any
+     * joint) or neither part's coefficients are known.
      */
     double
     joining_reach(unsigned int k) const;
+    /**
+     * The lowest Temperature limit (C; infinite: none) of the bodies of the
+     * part that is heated to make joint @p k (Assembly/Order), and whose it
+     * is.
+     */
+    std::pair<double, std::string>
+    heating_limit(unsigned int k) const;
+    /**
+     * How far (mm, diametral, the least over its points) the part of
+     * bodies @p first to @p last opens joint @p k when heated (the outer
+     * part, its bore growing) or @p cooling (the inner part, its outside
+     * shrinking) as a whole by @p dT kelvin: the joint's body's free
+     * growth alpha D dT, and for a part of several bodies what its joints'
+     * changed forces add (solved on the condensed compliances, unilateral:
+     * a joint of the part may open). NaN if a body of the part has no
+     * coefficient.
+     */
+    double
+    part_opening(unsigned int k,
+                 unsigned int first,
+                 unsigned int last,
+                 bool         cooling,
+                 double       dT) const;
     /** Body @p b's coefficient of expansion for heating or @p cooling. */
     double
     expansion(unsigned int b, bool cooling) const;
@@ -571,10 +607,9 @@ namespace coaxfit
      * @p cooling (the inner part, its outside shrinking) by the
      * temperature change that opens it by @p opening (mm, diametral):
      * the joint's body's own alpha for a part of one body (DIN 7190),
-     * otherwise the part's, whose joints' forces change with their
-     * bodies' different expansions (solved on the condensed compliances,
-     * a few fixed-point steps where a joint opens). NaN if a body of the
-     * part has no coefficient.
+     * otherwise the part's (part_opening() over D dT, a few fixed-point
+     * steps where a joint of the part opens). NaN if a body of the part
+     * has no coefficient.
      */
     double
     part_expansion(unsigned int k,

@@ -123,7 +123,7 @@ namespace coaxfit
     struct Combination
     {
       std::vector<unsigned int> choice;            ///< per selected joint
-      unsigned int              unjoinable    = 0; ///< fits, joinable()
+      unsigned int              unjoinable    = 0; ///< joints, joinable()
       unsigned int              not_preferred = 0;
       double                    width         = 0.; ///< um, sum of bands
       double                    margin        = 0.; ///< least, linear model
@@ -181,6 +181,14 @@ namespace coaxfit
      */
     bool
     joinable(unsigned int k, const std::vector<double> &U) const;
+
+    /**
+     * The joints with an interference (selected or kept) that cannot be
+     * joined by temperature at the measured interferences @p U (mm):
+     * joinable() false.
+     */
+    std::vector<unsigned int>
+    unjoinable_joints(const std::vector<double> &U) const;
 
     /**
      * The linear model's largest growth over joint @p k's points of its

@@ -689,6 +689,13 @@ main()
                     << ")";
         }
       std::cout << std::setprecision(6) << '\n';
+      // The caution says what joins it.
+      for (const auto &w : c["warnings"])
+        if (w.get<std::string>().rfind("joining Sleeve-Hub", 0) == 0)
+          std::cout << "  caution: "
+                    << w.get<std::string>().substr(
+                         w.get<std::string>().find("; ") + 2, 46)
+                    << '\n';
     }
     inner_cooled = false;
 

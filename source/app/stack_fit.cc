@@ -444,6 +444,38 @@ namespace coaxfit
                  "refinement";
             list.push_back(s.str());
           }
+    // A shrink fit whose outer part would be heated above its limit (as
+    // for two bodies): what else joins it.
+    const bool shrink
+      = parameters.joining == JoiningMethod::shrink
+        || parameters.joining == JoiningMethod::shrink_degreased;
+    for (const JointFigures &f : joints_out)
+      if (shrink && f.heat_above_limit)
+        {
+          const std::string inner = part_text(f.press_inner_part),
+                            outer = part_text(f.press_outer_part);
+          std::string alternative;
+          if (std::isnan(f.cool_inner_to))
+            alternative = "join by pressing or with a smaller interference";
+          else if (f.cool_reachable)
+            alternative = "cooling " + inner + " to " + celsius(f.cool_inner_to)
+                          + " instead avoids it";
+          else if (f.both_cool_inner_to >= OperationAnalysis::coldest_coolant)
+            alternative = "cooling " + inner + " alone is not reachable ("
+                          + celsius(f.cool_inner_to)
+                          + "); both at once do: " + outer + " at "
+                          + celsius(f.heat_limit) + " and " + inner
+                          + " cooled to " + celsius(f.both_cool_inner_to);
+          else
+            alternative = "neither cooling " + inner
+                          + " alone nor both at once reach it (below -196 C): "
+                            "press the parts together or reduce the "
+                            "interference";
+          list.push_back("joining " + f.name + ": heating " + outer + " to "
+                         + celsius(f.heat_outer_to) + " exceeds "
+                         + f.heat_limit_body + "'s temperature limit "
+                         + celsius(f.heat_limit) + "; " + alternative);
+        }
     return list;
   }
 

@@ -96,14 +96,17 @@ namespace coaxfit
     }
 
     /**
-     * A selection's answer moved from the case of the means into the
-     * study's directory @p dir: named as the study @p base (summary.json's
-     * case, report.md's heading), its parameters.prm the study's (run
-     * again, it gives the same answer).
+     * A selection's answer (no fits) moved from the case of the means,
+     * `mean/`, into the study's directory @p dir: named as the study
+     * @p base (summary.json's case, report.md's heading), its
+     * parameters.prm the study's (run again, it gives the same answer).
      */
     void
-    name_the_study(const std::string &dir, const StackParameters &base)
+    take_selection_answer(const std::string &dir, const StackParameters &base)
     {
+      for (const auto &entry : fs::directory_iterator(dir + "/mean"))
+        fs::rename(entry.path(), dir + "/" + entry.path().filename().string());
+      fs::remove(dir + "/mean");
       const std::string mean = base.case_name + "_mean";
       {
         std::ifstream  in(dir + "/summary.json");
@@ -429,13 +432,7 @@ namespace coaxfit
           {
             // No fits: the study is the selection's answer, written as a
             // select run writes it (no case to run).
-            const std::string from = directory.staging_path() + "/mean";
-            for (const auto &entry : fs::directory_iterator(from))
-              fs::rename(entry.path(),
-                         directory.staging_path() + "/"
-                           + entry.path().filename().string());
-            fs::remove(from);
-            name_the_study(directory.staging_path(), base);
+            take_selection_answer(directory.staging_path(), base);
             out << "\ncoaxfit: Fit/Case = all of " << filename
                 << ": no case run, the selection found no fits\n"
                 << "  Verdict: FAILED: " << mean.failed.front() << '\n';

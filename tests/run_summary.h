@@ -201,6 +201,16 @@ namespace coaxfit_test
       }
     return difference / largest;
   }
+
+  /** The fits a stack's selection chose (summary.json), joined by " + ". */
+  inline std::string
+  fits_of(const nlohmann::json &j)
+  {
+    std::string text;
+    for (const auto &joint : j["selection"]["joints"])
+      text += (text.empty() ? "" : " + ") + joint["fit"].get<std::string>();
+    return text;
+  }
 } // namespace coaxfit_test
 
 #endif

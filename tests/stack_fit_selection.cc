@@ -335,16 +335,6 @@ namespace
     return read_summary(dir);
   }
 
-  /** The run's chosen fits joined by " + ". */
-  std::string
-  fits_of(const nlohmann::json &j)
-  {
-    std::string text;
-    for (const auto &joint : j["selection"]["joints"])
-      text += (text.empty() ? "" : " + ") + joint["fit"].get<std::string>();
-    return text;
-  }
-
   /** Compare the run's FE checks with the closed form. */
   void
   compare_checks(const nlohmann::json      &j,

@@ -945,9 +945,15 @@ namespace coaxfit
   void
   StackFit::select_fits(std::ostream &out)
   {
-    std::vector<double> reach;
-    for (unsigned int k = 0; k < stack_joints.size(); ++k)
-      reach.push_back(joining_reach(k));
+    // How far each joint's parts open it at the measured interferences U.
+    const auto reach = [this](const std::vector<double> &U) {
+      std::vector<double> radial, r;
+      for (unsigned int k = 0; k < U.size(); ++k)
+        radial.push_back((U[k] - parameters.fits[k].smoothing_loss) / 2.);
+      for (unsigned int k = 0; k < U.size(); ++k)
+        r.push_back(joining_reach(k, radial));
+      return r;
+    };
     auto chosen = std::make_shared<StackFitSelection>(
       parameters,
       [this](const std::vector<double> &U) { return evaluate(U); },

@@ -223,8 +223,8 @@ namespace coaxfit
     f.both_cool_inner_to = unknown;
     if (f.heat_above_limit && !f.cool_reachable)
       {
-        const double heated
-          = part_opening(k, k + 1, last, false, f.heat_limit - T);
+        const double heated = part_opening(
+          k, k + 1, last, false, f.heat_limit - T, radial_interferences(true));
         const double left  = opening - std::max(0., heated);
         const double alpha = part_expansion(k, first, k, true, left);
         if (alpha > 0.)
@@ -235,7 +235,8 @@ namespace coaxfit
 
 
   double
-  StackFit::joining_reach(const unsigned int k) const
+  StackFit::joining_reach(const unsigned int         k,
+                          const std::vector<double> &radial) const
   {
     const double T           = parameters.operation.assembly_temperature;
     const auto [first, last] = parameters.joined_parts(k);
@@ -249,14 +250,19 @@ namespace coaxfit
     bool         known = false;
     double       reach = 0.;
     const double heat
-      = part_opening(k, k + 1, last, false, std::max(0., limit - T));
+      = part_opening(k, k + 1, last, false, std::max(0., limit - T), radial);
     if (!std::isnan(heat))
       {
         known = true;
         reach += std::max(0., heat);
       }
-    const double cool = part_opening(
-      k, first, k, true, std::max(0., T - OperationAnalysis::coldest_coolant));
+    const double cool
+      = part_opening(k,
+                     first,
+                     k,
+                     true,
+                     std::max(0., T - OperationAnalysis::coldest_coolant),
+                     radial);
     if (!std::isnan(cool))
       {
         known = true;
@@ -320,11 +326,12 @@ namespace coaxfit
 
 
   double
-  StackFit::part_opening(const unsigned int k,
-                         const unsigned int first,
-                         const unsigned int last,
-                         const bool         cooling,
-                         const double       dT) const
+  StackFit::part_opening(const unsigned int         k,
+                         const unsigned int         first,
+                         const unsigned int         last,
+                         const bool                 cooling,
+                         const double               dT,
+                         const std::vector<double> &radial) const
   {
     for (unsigned int b = first; b <= last; ++b)
       if (!(expansion(b, cooling) > 0.))
@@ -339,14 +346,13 @@ namespace coaxfit
 
     // The body's free growth and what its joint's changed forces add, the
     // least over the points.
-    const std::vector<double> largest = radial_interferences(true);
-    const Vector<double>      at_rest
-      = part_surface(k, first, part_assembly(first, last, largest));
+    const Vector<double> at_rest
+      = part_surface(k, first, part_assembly(first, last, radial));
     const double         signed_dT = cooling ? -dT : dT;
     const Vector<double> u
       = part_surface(k,
                      first,
-                     part_assembly(first, last, largest, signed_dT, cooling));
+                     part_assembly(first, last, radial, signed_dT, cooling));
     double least = std::numeric_limits<double>::max();
     for (unsigned int i = 0; i < u.size(); ++i)
       {
@@ -370,8 +376,9 @@ namespace coaxfit
     // The coefficient g(dT) = opening(dT) / (D dT) at the temperature
     // change dT = opening / (D g(dT)): linear while the part's joints stay
     // closed, a few fixed-point steps where one opens.
-    const auto per_kelvin = [&](const double dT) {
-      return part_opening(k, first, last, cooling, dT) / (D * dT);
+    const std::vector<double> largest    = radial_interferences(true);
+    const auto                per_kelvin = [&](const double dT) {
+      return part_opening(k, first, last, cooling, dT, largest) / (D * dT);
     };
     double g = per_kelvin(1.);
     if (first == last || !(opening > 0.))

@@ -569,12 +569,13 @@ namespace coaxfit
      * How far joint @p k's parts as they are when it is made
      * (Assembly/Order) open it at most (mm, diametral): the outer part
      * heated to the lowest Temperature limit of its bodies and the inner
-     * part cooled to -196 C (part_opening() of each, both at once);
+     * part cooled to -196 C (part_opening() of each, both at once), the
+     * joints at the radial interferences @p radial (mm, one per joint);
      * infinite where the outer part has no limit (heating opens any
      * joint) or neither part's coefficients are known.
      */
     double
-    joining_reach(unsigned int k) const;
+    joining_reach(unsigned int k, const std::vector<double> &radial) const;
     /**
      * The lowest Temperature limit (C; infinite: none) of the bodies of the
      * part that is heated to make joint @p k (Assembly/Order), and whose it
@@ -589,15 +590,17 @@ namespace coaxfit
      * shrinking) as a whole by @p dT kelvin: the joint's body's free
      * growth alpha D dT, and for a part of several bodies what its joints'
      * changed forces add (solved on the condensed compliances, unilateral:
-     * a joint of the part may open). NaN if a body of the part has no
-     * coefficient.
+     * a joint of the part may open), its joints at the radial
+     * interferences @p radial (mm, one per joint of the stack). NaN if a
+     * body of the part has no coefficient.
      */
     double
-    part_opening(unsigned int k,
-                 unsigned int first,
-                 unsigned int last,
-                 bool         cooling,
-                 double       dT) const;
+    part_opening(unsigned int               k,
+                 unsigned int               first,
+                 unsigned int               last,
+                 bool                       cooling,
+                 double                     dT,
+                 const std::vector<double> &radial) const;
     /** Body @p b's coefficient of expansion for heating or @p cooling. */
     double
     expansion(unsigned int b, bool cooling) const;

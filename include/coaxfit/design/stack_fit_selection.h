@@ -111,13 +111,20 @@ namespace coaxfit
     }
 
     /**
-     * Select for @p parameters, the stack evaluated by @p evaluate; @p reach
-     * is how far each joint's parts open it at most for joining (mm,
-     * diametral; StackFit::joining_reach(), infinite where not known).
+     * How far each joint's parts open it at most for joining (mm,
+     * diametral; infinite where not judged) at measured diametral
+     * interferences (mm, one per joint): StackFit::joining_reach().
      */
-    StackFitSelection(const StackParameters     &parameters,
-                      const Evaluate            &evaluate,
-                      const std::vector<double> &reach);
+    using Reach
+      = std::function<std::vector<double>(const std::vector<double> &)>;
+
+    /**
+     * Select for @p parameters, the stack evaluated by @p evaluate, the
+     * joints' joining reach by @p reach.
+     */
+    StackFitSelection(const StackParameters &parameters,
+                      const Evaluate        &evaluate,
+                      const Reach           &reach);
 
     /** A combination: a candidate index per selected joint. */
     struct Combination
@@ -180,7 +187,16 @@ namespace coaxfit
      * made by pressure oil or pressed in (Design/Joining).
      */
     bool
-    joinable(unsigned int k, const std::vector<double> &U) const;
+    joinable(unsigned int k, const std::vector<double> &U) const
+    {
+      return joinable(k, U, reach);
+    }
+
+    /** joinable() with the joints' reach @p reached (mm). */
+    bool
+    joinable(unsigned int               k,
+             const std::vector<double> &U,
+             const std::vector<double> &reached) const;
 
     /**
      * The joints with an interference (selected or kept) that cannot be
@@ -188,7 +204,15 @@ namespace coaxfit
      * joinable() false.
      */
     std::vector<unsigned int>
-    unjoinable_joints(const std::vector<double> &U) const;
+    unjoinable_joints(const std::vector<double> &U) const
+    {
+      return unjoinable_joints(U, reach);
+    }
+
+    /** unjoinable_joints() with the joints' reach @p reached (mm). */
+    std::vector<unsigned int>
+    unjoinable_joints(const std::vector<double> &U,
+                      const std::vector<double> &reached) const;
 
     /**
      * The linear model's largest growth over joint @p k's points of its
@@ -233,7 +257,14 @@ namespace coaxfit
     json() const;
 
   private:
-    /** Per joint: how far its parts open it at most (mm, diametral). */
+    /** The joints' joining reach at measured interferences. */
+    Reach reach_at;
+    /**
+     * Per joint: how far its parts open it at most (mm, diametral) at U_0,
+     * for the ranking (a heated part whose joint opens as it is heated
+     * reaches less at larger interferences: check() takes each ranked
+     * combination's own).
+     */
     std::vector<double> reach;
     /**
      * Per joint, at each point: the linear model of joining_growth() at

@@ -945,15 +945,14 @@ namespace coaxfit
   void
   StackFit::select_fits(std::ostream &out)
   {
-    // How far each joint's parts open it at the measured interferences U.
-    const auto reach = [this](const std::vector<double> &U) {
-      std::vector<double> radial, r;
-      for (unsigned int k = 0; k < U.size(); ++k)
-        radial.push_back((U[k] - parameters.fits[k].smoothing_loss) / 2.);
-      for (unsigned int k = 0; k < U.size(); ++k)
-        r.push_back(joining_reach(k, radial));
-      return r;
-    };
+    // How far joint k's parts open it at the measured interferences U.
+    const auto reach
+      = [this](const unsigned int k, const std::vector<double> &U) {
+          std::vector<double> radial;
+          for (unsigned int j = 0; j < U.size(); ++j)
+            radial.push_back((U[j] - parameters.fits[j].smoothing_loss) / 2.);
+          return joining_reach(k, radial);
+        };
     auto chosen = std::make_shared<StackFitSelection>(
       parameters,
       [this](const std::vector<double> &U) { return evaluate(U); },

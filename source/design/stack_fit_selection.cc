@@ -130,7 +130,6 @@ namespace coaxfit
           n_relief_points.push_back(base[0].relief_gap[k].size());
         }
     growth0                             = base[0].joining_growth;
-    this->reach                         = reach_at(U0);
     q0                                  = flatten(base);
     const std::vector<bool> base_regime = regime(base);
     for (const unsigned int k : selected)
@@ -285,9 +284,25 @@ namespace coaxfit
 
 
 
+  double
+  StackFitSelection::reach_of(const unsigned int         k,
+                              const std::vector<double> &U) const
+  {
+    const auto [first, last] = parameters.joined_parts(k);
+    std::pair<unsigned int, std::vector<double>> key{k, {}};
+    for (unsigned int j = first; j < last; ++j)
+      if (j != k)
+        key.second.push_back(U[j]);
+    const auto known = reached.find(key);
+    if (known != reached.end())
+      return known->second;
+    return reached[key] = reach_at(k, U);
+  }
+
+
+
   std::vector<unsigned int>
-  StackFitSelection::unjoinable_joints(const std::vector<double> &U,
-                                       const std::vector<double> &reached) const
+  StackFitSelection::unjoinable_joints(const std::vector<double> &U) const
   {
     // Every joint with an interference: the selected ones and those that
     // keep theirs (the parts joined before change what they need).
@@ -295,7 +310,7 @@ namespace coaxfit
     for (unsigned int k = 0; k < U.size(); ++k)
       if ((U[k] > 0.
            || std::find(selected.begin(), selected.end(), k) != selected.end())
-          && !joinable(k, U, reached))
+          && !joinable(k, U))
         which.push_back(k);
     return which;
   }
@@ -304,19 +319,19 @@ namespace coaxfit
 
   bool
   StackFitSelection::joinable(const unsigned int         k,
-                              const std::vector<double> &U,
-                              const std::vector<double> &reached) const
+                              const std::vector<double> &U) const
   {
     // Joined by pressure oil or pressed in (Design/Joining): no heat.
     if (parameters.joining != JoiningMethod::shrink
         && parameters.joining != JoiningMethod::shrink_degreased)
       return true;
-    const double D = parameters.joint_diameter(k);
-    return !std::isfinite(reached[k])
+    const double D     = parameters.joint_diameter(k);
+    const double reach = reach_of(k, U);
+    return !std::isfinite(reach)
            || U[k] + joining_growth(k, U)
                   + joining_clearance_entry(
                     parameters.operation.joining_clearance_text, D)
-                <= reached[k];
+                <= reach;
   }
 
 
@@ -756,34 +771,6 @@ namespace coaxfit
   StackFitSelection::check(const Evaluate &evaluate)
   {
     const unsigned int J_s = selected.size(), corners = 1u << J_s;
-    // Joinable by temperature with each ranked combination's own reach at
-    // its largest interferences (the ranking took the reach at U_0): the
-    // ranking again by that, in order otherwise.
-    std::vector<std::vector<double>> reached;
-    for (Combination &c : ranked)
-      {
-        const std::vector<double> U_max = corner_of(c, corners - 1);
-        reached.push_back(reach_at(U_max));
-        c.unjoinable = unjoinable_joints(U_max, reached.back()).size();
-      }
-    std::vector<unsigned int> order(ranked.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(),
-                     order.end(),
-                     [&](const unsigned int a, const unsigned int b) {
-                       return ranked[a].unjoinable < ranked[b].unjoinable;
-                     });
-    {
-      std::vector<Combination>         by_joining;
-      std::vector<std::vector<double>> reach_of;
-      for (const unsigned int i : order)
-        {
-          by_joining.push_back(ranked[i]);
-          reach_of.push_back(reached[i]);
-        }
-      ranked  = by_joining;
-      reached = reach_of;
-    }
     for (unsigned int r = 0; r < ranked.size() && r < max_checks(); ++r)
       {
         const Combination        &c = ranked[r];
@@ -835,7 +822,7 @@ namespace coaxfit
             for (unsigned int j = 0; j < J_s; ++j)
               chosen.push_back(candidates[j][c.choice[j]]);
             const std::vector<double> U_max = corner_of(c, corners - 1);
-            for (const unsigned int k : unjoinable_joints(U_max, reached[r]))
+            for (const unsigned int k : unjoinable_joints(U_max))
               {
                 const auto at = std::find(selected.begin(), selected.end(), k);
                 notes.push_back(

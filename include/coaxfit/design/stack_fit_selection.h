@@ -6,6 +6,7 @@
 #include <coaxfit/parameters/stack_parameters.h>
 
 #include <functional>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -111,12 +112,12 @@ namespace coaxfit
     }
 
     /**
-     * How far each joint's parts open it at most for joining (mm,
-     * diametral; infinite where not judged) at measured diametral
-     * interferences (mm, one per joint): StackFit::joining_reach().
+     * How far joint k's parts open it at most for joining (mm, diametral;
+     * infinite where not judged) at measured diametral interferences (mm,
+     * one per joint): StackFit::joining_reach().
      */
     using Reach
-      = std::function<std::vector<double>(const std::vector<double> &)>;
+      = std::function<double(unsigned int, const std::vector<double> &)>;
 
     /**
      * Select for @p parameters, the stack evaluated by @p evaluate, the
@@ -187,16 +188,7 @@ namespace coaxfit
      * made by pressure oil or pressed in (Design/Joining).
      */
     bool
-    joinable(unsigned int k, const std::vector<double> &U) const
-    {
-      return joinable(k, U, reach);
-    }
-
-    /** joinable() with the joints' reach @p reached (mm). */
-    bool
-    joinable(unsigned int               k,
-             const std::vector<double> &U,
-             const std::vector<double> &reached) const;
+    joinable(unsigned int k, const std::vector<double> &U) const;
 
     /**
      * The joints with an interference (selected or kept) that cannot be
@@ -204,15 +196,15 @@ namespace coaxfit
      * joinable() false.
      */
     std::vector<unsigned int>
-    unjoinable_joints(const std::vector<double> &U) const
-    {
-      return unjoinable_joints(U, reach);
-    }
+    unjoinable_joints(const std::vector<double> &U) const;
 
-    /** unjoinable_joints() with the joints' reach @p reached (mm). */
-    std::vector<unsigned int>
-    unjoinable_joints(const std::vector<double> &U,
-                      const std::vector<double> &reached) const;
+    /**
+     * Joint @p k's reach (Reach) at the measured interferences @p U, kept
+     * for the interferences of the joints of its parts (all it depends
+     * on).
+     */
+    double
+    reach_of(unsigned int k, const std::vector<double> &U) const;
 
     /**
      * The linear model's largest growth over joint @p k's points of its
@@ -259,13 +251,9 @@ namespace coaxfit
   private:
     /** The joints' joining reach at measured interferences. */
     Reach reach_at;
-    /**
-     * Per joint: how far its parts open it at most (mm, diametral) at U_0,
-     * for the ranking (a heated part whose joint opens as it is heated
-     * reaches less at larger interferences: check() takes each ranked
-     * combination's own).
-     */
-    std::vector<double> reach;
+    /** reach_of()'s: per joint and its parts' interferences. */
+    mutable std::map<std::pair<unsigned int, std::vector<double>>, double>
+      reached;
     /**
      * Per joint, at each point: the linear model of joining_growth() at
      * U_0, and its slope per selected joint (mm per mm).

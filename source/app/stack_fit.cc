@@ -867,6 +867,7 @@ namespace coaxfit
     for (const auto &c : condensed)
       C.push_back(c->get_compliance());
     std::vector<StackStateFigures> result;
+    const std::vector<double>      radial = radial_interferences(U);
     for (const bool loaded : {false, true})
       {
         if (loaded && !has_loads())
@@ -874,8 +875,7 @@ namespace coaxfit
         std::vector<StackJoint> joints = stack_joints;
         for (unsigned int k = 0; k < joints.size(); ++k)
           {
-            joints[k].interference
-              = (U[k] - parameters.fits[k].smoothing_loss) / 2.;
+            joints[k].interference = radial[k];
             if (!loaded)
               joints[k].load_shift.reinit(0);
           }
@@ -905,9 +905,6 @@ namespace coaxfit
             // interference (the state of assembly).
             if (!loaded)
               {
-                std::vector<double> radial;
-                for (const StackJoint &joint : joints)
-                  radial.push_back(joint.interference);
                 const Vector<double> growth = joining_growth(k, radial);
                 figures.joining_growth.emplace_back(growth.begin(),
                                                     growth.end());
@@ -948,10 +945,7 @@ namespace coaxfit
     // How far joint k's parts open it at the measured interferences U.
     const auto reach
       = [this](const unsigned int k, const std::vector<double> &U) {
-          std::vector<double> radial;
-          for (unsigned int j = 0; j < U.size(); ++j)
-            radial.push_back((U[j] - parameters.fits[j].smoothing_loss) / 2.);
-          return joining_reach(k, radial);
+          return joining_reach(k, radial_interferences(U));
         };
     auto chosen = std::make_shared<StackFitSelection>(
       parameters,

@@ -35,15 +35,30 @@ namespace coaxfit
 
 
   std::vector<double>
-  StackFit::radial_interferences(const bool largest) const
+  StackFit::radial_interferences(const std::vector<double> &U) const
   {
     std::vector<double> radial;
-    for (unsigned int k = 0; k < stack_joints.size(); ++k)
-      radial.push_back(largest ? 0.5
-                                   * (parameters.fits[k].largest_interference
-                                      - parameters.fits[k].smoothing_loss) :
-                                 stack_joints[k].interference);
+    for (unsigned int k = 0; k < U.size(); ++k)
+      radial.push_back(0.5 * (U[k] - parameters.fits[k].smoothing_loss));
     return radial;
+  }
+
+
+
+  std::vector<double>
+  StackFit::radial_interferences(const bool largest) const
+  {
+    if (!largest)
+      {
+        std::vector<double> radial;
+        for (const StackJoint &joint : stack_joints)
+          radial.push_back(joint.interference);
+        return radial;
+      }
+    std::vector<double> U;
+    for (const JointFit &fit : parameters.fits)
+      U.push_back(fit.largest_interference);
+    return radial_interferences(U);
   }
 
 

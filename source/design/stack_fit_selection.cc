@@ -701,13 +701,11 @@ namespace coaxfit
         Combination c;
         c.choice = choice;
         c.margin = touches ? margin : -infinite;
-        // Joined at the combination's largest interferences (the growth by
-        // the parts joined before rises with them).
-        const bool                ranks = touches && margin >= 1.;
-        const std::vector<double> U_max
-          = ranks ? corner_of(c, corners - 1) : std::vector<double>();
-        if (ranks)
-          c.unjoinable = unjoinable_joints(U_max).size();
+        // A feasible one is joined at its largest interferences (the
+        // growth by the parts joined before rises with them).
+        const bool is_feasible = touches && margin >= 1.;
+        if (is_feasible)
+          c.unjoinable = unjoinable_joints(corner_of(c, corners - 1)).size();
         for (unsigned int j = 0; j < J_s; ++j)
           {
             const IsoFit &f = candidates[j][choice[j]];
@@ -716,7 +714,7 @@ namespace coaxfit
           }
         c.governed_by
           = criterion_names[touches ? which : criterion_names.size() - 1];
-        if (touches && margin >= 1.)
+        if (is_feasible)
           feasible.push_back(c);
         if (c.margin > closest.margin || closest.choice.empty())
           closest = c;

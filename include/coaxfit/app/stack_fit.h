@@ -533,6 +533,12 @@ namespace coaxfit
     std::vector<double>
     radial_interferences(bool largest) const;
     /**
+     * Each joint's radial effective interference (mm) at the measured
+     * diametral interferences @p U (mm): (U - smoothing loss) / 2.
+     */
+    std::vector<double>
+    radial_interferences(const std::vector<double> &U) const;
+    /**
      * The contact of the part-assembly of bodies @p first to @p last at
      * the assembly temperature (the others removed, the same meshes),
      * monolithically on the bodies' compliances on its joints' points,
